@@ -1,0 +1,62 @@
+// Channels between processes, as the occam program would have had them:
+//  * internal: both ends on one transputer; a rendezvous, the second process to arrive copies (2w+19 cycles);
+//  * direct: the two ends on neighbouring transputers, alone on that link direction; the bytes move by DMA;
+//  * routed: anything else (not neighbours, or a link direction shared by several channels): store-and-forward
+//    through software router processes on every transputer the message enters (router.cpp).
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include <systemc>
+
+#include "t800/link.hpp"
+#include "t800/message.hpp"
+
+namespace network {
+
+class Process;
+
+struct Channel {
+  enum class Kind { internal, direct, routed };
+
+  int id = 0;
+  std::string name;
+  int from = 0, to = 0;  // node indices (the host is Machine::kHost)
+  Kind kind = Kind::internal;
+  std::vector<int> path;  // nodes from `from` to `to`, for direct and routed channels
+
+  // internal rendezvous
+  Process* waiting_reader = nullptr;
+  Process* waiting_writer = nullptr;
+  t800::Message slot;
+  sc_core::sc_event handed_over;
+  // direct: the link and the writer's end of it
+  t800::Link* link = nullptr;
+  int writer_end = 0;
+  // routed: messages delivered at `to` by its router, waiting for the reader
+  std::deque<t800::Message> mailbox;
+  sc_core::sc_event mail;
+};
+
+// Header a router needs on every routed message: destination channel and length, two words (U).
+constexpr std::int64_t kRouteHeaderBytes = 8;
+
+struct RoutedEnvelope {
+  int channel = 0;
+  t800::Message inner;
+};
+
+void send(Process& p, Channel& c, t800::Message m);
+t800::Message receive(Process& p, Channel& c);
+
+// The pieces routers are built from.
+void link_out(Process& p, t800::Link& link, int end, t800::Message m);
+t800::Message link_in(Process& p, t800::Link& link, int end);
+void deliver_to_mailbox(Process& router, Channel& c, t800::Message m);
+
+const char* to_string(Channel::Kind kind);
+
+}  // namespace network

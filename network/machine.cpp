@@ -1,0 +1,189 @@
+#include "network/machine.hpp"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+namespace network {
+
+namespace {
+
+std::string module_name(const std::string& name) {
+  std::string s = name;
+  for (char& ch : s)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return s;
+}
+
+void run_body(Process* p, Process::Body body) {
+  p->set_status("ready");
+  p->reschedule();
+  p->set_status("running");
+  body(*p);
+  p->mark_ended();
+}
+
+}  // namespace
+
+Machine::Machine(const Topology& topology, const MachineOptions& options)
+    : topology_(topology), options_(options) {
+  for (const ProcessorSpec& spec : topology_.processors) {
+    transputers_.push_back(std::make_unique<t800::Transputer>(module_name(spec.name).c_str(), spec.config));
+    transputers_.back()->activity().keep_intervals(options.keep_intervals);
+    cost_models_.emplace_back(spec.config, options.precision, options.code_efficiency);
+  }
+  elaborate_links();
+}
+
+Machine::~Machine() = default;
+
+std::string Machine::node_name(int node) const {
+  return node == kHost ? std::string("host") : topology_.processors.at(node).name;
+}
+
+void Machine::elaborate_links() {
+  auto end_name = [&](const LinkEnd& e) {
+    return topology_.processors[e.processor].name + ".link" + std::to_string(e.link);
+  };
+  for (std::size_t i = 0; i < topology_.connections.size(); ++i) {
+    const Connection& c = topology_.connections[i];
+    t800::LinkConfig config = options_.link;
+    if (c.speed_mbps) config.speed_mbps = *c.speed_mbps;
+    t800::Transputer& a = *transputers_[c.a.processor];
+    t800::Transputer& b = *transputers_[c.b.processor];
+    link_modules_.push_back(std::make_unique<t800::Link>(("link" + std::to_string(i)).c_str(), config,
+                                                         &a.activity(), &b.activity()));
+    a.attach(c.a.link, *link_modules_.back(), 0);
+    b.attach(c.b.link, *link_modules_.back(), 1);
+    links_.push_back({end_name(c.a) + "-" + end_name(c.b), {c.a.processor, c.b.processor},
+                      link_modules_.back().get()});
+  }
+  if (topology_.host) {
+    t800::Transputer& t = *transputers_[topology_.host->processor];
+    link_modules_.push_back(
+        std::make_unique<t800::Link>("hostlink", options_.link, nullptr, &t.activity()));
+    t.attach(topology_.host->link, *link_modules_.back(), 1);
+    links_.push_back({"host-" + end_name(*topology_.host), {kHost, topology_.host->processor},
+                      link_modules_.back().get()});
+  }
+  for (auto& l : link_modules_) {
+    l->activity(0).keep_intervals(options_.keep_intervals);
+    l->activity(1).keep_intervals(options_.keep_intervals);
+  }
+}
+
+std::optional<std::pair<t800::Link*, int>> Machine::link_between(int a, int b) const {
+  for (const LinkInfo& l : links_) {
+    if (l.node[0] == a && l.node[1] == b) return std::make_pair(l.link, 0);
+    if (l.node[1] == a && l.node[0] == b) return std::make_pair(l.link, 1);
+  }
+  return std::nullopt;
+}
+
+std::vector<int> Machine::route(int from, int to) const {
+  const int host_proc = topology_.host_processor();
+  if (from == to) return {from};
+  if (from == kHost || to == kHost) {
+    if (host_proc < 0) return {};
+    std::vector<int> inner = from == kHost ? topology_.shortest_path(host_proc, to)
+                                           : topology_.shortest_path(from, host_proc);
+    if (inner.empty()) return {};
+    if (from == kHost) inner.insert(inner.begin(), kHost);
+    else inner.push_back(kHost);
+    return inner;
+  }
+  return topology_.shortest_path(from, to);
+}
+
+Channel& Machine::channel(const std::string& name, int from, int to) {
+  if (finalised_) throw std::logic_error("channel " + name + " declared after the simulation started");
+  auto c = std::make_unique<Channel>();
+  c->id = int(channels_.size());
+  c->name = name;
+  c->from = from;
+  c->to = to;
+  c->path = route(from, to);
+  if (c->path.empty())
+    throw std::runtime_error("channel " + name + ": no route from " + node_name(from) + " to " +
+                             node_name(to));
+  channels_.push_back(std::move(c));
+  return *channels_.back();
+}
+
+// A channel gets a link direction to itself when its ends are neighbours and no other channel uses that
+// direction; every other inter-processor channel is routed, and every link direction a routed channel
+// enters gets a router at its receiving end.
+void Machine::finalise_channels() {
+  std::map<std::pair<int, int>, int> users;
+  for (auto& c : channels_)
+    for (std::size_t i = 0; i + 1 < c->path.size(); ++i) ++users[{c->path[i], c->path[i + 1]}];
+
+  std::map<std::pair<int, int>, bool> routed_hop;
+  for (auto& c : channels_) {
+    if (c->path.size() == 1) {
+      c->kind = Channel::Kind::internal;
+    } else if (c->path.size() == 2 && users[{c->from, c->to}] == 1) {
+      c->kind = Channel::Kind::direct;
+      auto hop = link_between(c->from, c->to);
+      c->link = hop->first;
+      c->writer_end = hop->second;
+    } else {
+      c->kind = Channel::Kind::routed;
+      for (std::size_t i = 0; i + 1 < c->path.size(); ++i) routed_hop[{c->path[i], c->path[i + 1]}] = true;
+    }
+  }
+  for (const auto& [hop, routed] : routed_hop) {
+    auto link = link_between(hop.second, hop.first);
+    start_router(hop.second, hop.first, *link->first, link->second);
+  }
+  finalised_ = true;
+}
+
+// A software router (store-and-forward): takes each message off its link, then hands it to the local reader
+// or sends it on towards its destination along the channel's path. High priority, as occam routers ran.
+void Machine::start_router(int node, int from, t800::Link& link, int end) {
+  const std::string name = "router@" + node_name(node) + "<-" + node_name(from);
+  Process& router = spawn(node, name, t800::Priority::high, [this, node, &link, end](Process& self) {
+    for (;;) {
+      self.set_status("router waiting");
+      t800::Message m = link_in(self, link, end);
+      const RoutedEnvelope& envelope = std::any_cast<const RoutedEnvelope&>(m.payload);
+      Channel& c = *channels_.at(envelope.channel);
+      if (c.to == node) {
+        deliver_to_mailbox(self, c, envelope.inner);
+        continue;
+      }
+      auto here = std::find(c.path.begin(), c.path.end(), node);
+      auto next = link_between(node, *(here + 1));
+      link_out(self, *next->first, next->second, std::move(m));
+    }
+  });
+  router.set_daemon();
+}
+
+Process& Machine::spawn(int node, const std::string& name, t800::Priority priority, Process::Body body) {
+  processes_.push_back(std::make_unique<Process>(*this, node, name, priority));
+  Process* p = processes_.back().get();
+  if (sc_core::sc_is_running())
+    sc_core::sc_spawn([p, body] { run_body(p, body); }, sc_core::sc_gen_unique_name("proc"));
+  else
+    pending_.emplace_back(p, std::move(body));
+  return *p;
+}
+
+std::vector<BlockedProcess> Machine::run() {
+  finalise_channels();
+  for (auto& [p, body] : pending_)
+    sc_core::sc_spawn([p, body] { run_body(p, body); }, sc_core::sc_gen_unique_name("proc"));
+  pending_.clear();
+  sc_core::sc_start();
+  end_us_ = sc_core::sc_time_stamp().to_seconds() * 1e6;
+  for (auto& t : transputers_) t->activity().close(sc_core::sc_time_stamp());
+
+  std::vector<BlockedProcess> blocked;
+  for (auto& p : processes_)
+    if (!p->ended() && !p->daemon()) blocked.push_back({p->name(), node_name(p->node()), p->status()});
+  return blocked;
+}
+
+}  // namespace network

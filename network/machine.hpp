@@ -1,0 +1,94 @@
+// A topology elaborated into SystemC: one Transputer per processor, one Link per connection (and one to the
+// host PC), the channels workloads declare, and the router processes that routed channels need.
+//
+// Use: declare channels, spawn processes, then run(). One Machine (one simulation) per OS process: SystemC
+// cannot be restarted (DESIGN.md).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "network/channel.hpp"
+#include "network/process.hpp"
+#include "network/topology.hpp"
+#include "t800/cost_model.hpp"
+#include "t800/transputer.hpp"
+
+namespace network {
+
+struct MachineOptions {
+  t800::LinkConfig link;  // default for connections without their own speed
+  t800::Precision precision = t800::Precision::real64;
+  double code_efficiency = 1.0;
+  bool keep_intervals = false;  // for traces
+};
+
+// A process that had not ended when the simulation ran out of events.
+struct BlockedProcess {
+  std::string process, processor, status;
+};
+
+class Machine {
+ public:
+  static constexpr int kHost = -1;
+
+  Machine(const Topology& topology, const MachineOptions& options);
+  ~Machine();
+  Machine(const Machine&) = delete;
+  Machine& operator=(const Machine&) = delete;
+
+  // Declares a channel from node `from` to node `to` (processor indices or kHost).
+  Channel& channel(const std::string& name, int from, int to);
+  // Places a process on a node; it starts when the simulation starts (or at once, if it is running).
+  Process& spawn(int node, const std::string& name, t800::Priority priority, Process::Body body);
+
+  // Runs until every process has ended or nothing can happen any more; returns the processes left blocked
+  // (empty on a clean end: a deadlock otherwise).
+  std::vector<BlockedProcess> run();
+
+  const Topology& topology() const { return topology_; }
+  int processors() const { return int(transputers_.size()); }
+  t800::Transputer& transputer(int node) { return *transputers_.at(node); }
+  const t800::Transputer& transputer(int node) const { return *transputers_.at(node); }
+  const t800::CostModel& cost_model(int node) const { return cost_models_.at(node); }
+  const MachineOptions& options() const { return options_; }
+  std::string node_name(int node) const;
+
+  struct LinkInfo {
+    std::string name;  // "P0.link1-P1.link0"
+    int node[2];       // the two ends (kHost for the host)
+    t800::Link* link;
+  };
+  const std::vector<LinkInfo>& links() const { return links_; }
+  const std::vector<std::unique_ptr<Channel>>& channels() const { return channels_; }
+  double simulated_us() const { return end_us_; }
+
+  // The link from node a to its neighbour b, and a's end of it; nullopt when they are not neighbours.
+  std::optional<std::pair<t800::Link*, int>> link_between(int a, int b) const;
+  // The processes running on nodes, for reports.
+  const std::vector<std::unique_ptr<Process>>& processes() const { return processes_; }
+
+ private:
+  void elaborate_links();
+  void finalise_channels();
+  void start_router(int node, int from, t800::Link& link, int end);
+  std::vector<int> route(int from, int to) const;
+
+  Topology topology_;
+  MachineOptions options_;
+  std::vector<std::unique_ptr<t800::Transputer>> transputers_;
+  std::vector<t800::CostModel> cost_models_;
+  std::vector<std::unique_ptr<t800::Link>> link_modules_;
+  std::vector<LinkInfo> links_;
+  std::vector<std::unique_ptr<Channel>> channels_;
+  std::vector<std::unique_ptr<Process>> processes_;
+  std::vector<std::pair<Process*, Process::Body>> pending_;
+  std::vector<int> ended_;
+  bool finalised_ = false;
+  double end_us_ = 0;
+};
+
+}  // namespace network

@@ -1,0 +1,79 @@
+#include "network/process.hpp"
+
+#include "network/channel.hpp"
+#include "network/machine.hpp"
+#include "t800/timing_table.hpp"
+
+namespace network {
+
+Process::Process(Machine& machine, int node, std::string name, t800::Priority priority)
+    : machine_(machine), node_(node) {
+  descriptor_.name = std::move(name);
+  descriptor_.priority = priority;
+}
+
+bool Process::on_host() const { return node_ == Machine::kHost; }
+
+void Process::compute(std::int64_t cycles, const std::string& label) {
+  if (on_host() || cycles <= 0) return;  // the host PC is not what is being measured
+  machine_.transputer(node_).cpu().execute(descriptor_, cycles, t800::ProcessorState::compute, label);
+}
+
+void Process::compute(const t800::OperationMix& mix, const std::string& label) {
+  if (on_host()) return;
+  compute(machine_.cost_model(node_).cycles(mix), label);
+}
+
+void Process::communication_cycles(std::int64_t cycles) {
+  if (on_host() || cycles <= 0) return;
+  machine_.transputer(node_).cpu().execute(descriptor_, cycles, t800::ProcessorState::communicate, {});
+}
+
+void Process::deschedule() {
+  if (!on_host()) machine_.transputer(node_).cpu().deschedule(descriptor_);
+}
+
+void Process::reschedule() {
+  if (!on_host()) machine_.transputer(node_).cpu().acquire(descriptor_);
+}
+
+void Process::out(Channel& channel, t800::Message message) {
+  set_status("out on channel " + channel.name);
+  send(*this, channel, std::move(message));
+  set_status("running");
+}
+
+t800::Message Process::in(Channel& channel) {
+  set_status("in on channel " + channel.name);
+  t800::Message m = receive(*this, channel);
+  set_status("running");
+  return m;
+}
+
+void Process::par(const std::vector<Body>& branches) {
+  std::vector<Process*> children;
+  for (std::size_t i = 0; i < branches.size(); ++i) {
+    compute(t800::timing::kStartProcess, "startp");
+    const Body& body = branches[i];
+    children.push_back(&machine_.spawn(node_, name() + "." + std::to_string(i), descriptor_.priority,
+                                       [body](Process& child) {
+                                         body(child);
+                                         child.compute(t800::timing::kEndProcess, "endp");
+                                       }));
+  }
+  set_status("waiting for its parallel branches");
+  deschedule();
+  for (Process* child : children)
+    while (!child->ended()) sc_core::wait(child->ended_event());
+  reschedule();
+  set_status("running");
+}
+
+void Process::mark_ended() {
+  deschedule();
+  ended_ = true;
+  status_ = "ended";
+  ended_event_.notify(sc_core::SC_ZERO_TIME);
+}
+
+}  // namespace network

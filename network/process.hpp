@@ -1,0 +1,68 @@
+// The occam-like process API workloads are written in (DESIGN.md step 3). A process is ordinary sequential
+// C++ running in its own SystemC thread on one transputer (or on the host PC, where computing is free):
+//   p.compute(mix, "D12");  p.out(ch, message);  Message m = p.in(ch);  p.par({...});
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <systemc>
+
+#include "t800/cpu.hpp"
+#include "t800/message.hpp"
+#include "t800/operation_mix.hpp"
+
+namespace network {
+
+class Machine;
+struct Channel;
+
+class Process {
+ public:
+  using Body = std::function<void(Process&)>;
+
+  Process(Machine& machine, int node, std::string name, t800::Priority priority);
+
+  // Runs a block of computation on this process's CPU.
+  void compute(std::int64_t cycles, const std::string& label = {});
+  void compute(const t800::OperationMix& mix, const std::string& label = {});
+  // Sends a message and returns when it has been taken (occam's synchronised `!`).
+  void out(Channel& channel, t800::Message message);
+  // Waits for and returns the next message on the channel (occam's `?`).
+  t800::Message in(Channel& channel);
+  // Runs the branches as parallel processes on the same processor and returns when all have ended.
+  void par(const std::vector<Body>& branches);
+
+  int node() const { return node_; }  // processor index, or Machine::kHost
+  const std::string& name() const { return descriptor_.name; }
+  bool on_host() const;
+  double now_us() const { return sc_core::sc_time_stamp().to_seconds() * 1e6; }
+  Machine& machine() { return machine_; }
+
+  // For the channel implementations: CPU work of communication instructions, giving up and retaking the CPU.
+  void communication_cycles(std::int64_t cycles);
+  void deschedule();
+  void reschedule();
+  // What the process is doing, for deadlock reports.
+  void set_status(std::string status) { status_ = std::move(status); }
+  const std::string& status() const { return status_; }
+  // Ends the process's life cycle (called by the machine once the body returns).
+  void mark_ended();
+  bool ended() const { return ended_; }
+  sc_core::sc_event& ended_event() { return ended_event_; }
+  bool daemon() const { return daemon_; }  // routers run forever and are not waited for
+  void set_daemon() { daemon_ = true; }
+
+ private:
+  Machine& machine_;
+  int node_;
+  t800::ProcessDescriptor descriptor_;
+  std::string status_ = "not started";
+  bool ended_ = false;
+  bool daemon_ = false;
+  sc_core::sc_event ended_event_;
+};
+
+}  // namespace network

@@ -1,0 +1,81 @@
+#include "t800/activity.hpp"
+
+namespace t800 {
+
+namespace {
+double now_us() { return sc_core::sc_time_stamp().to_seconds() * 1e6; }
+}  // namespace
+
+const char* to_string(ProcessorState state) {
+  switch (state) {
+    case ProcessorState::idle: return "idle";
+    case ProcessorState::compute: return "compute";
+    case ProcessorState::communicate: return "communicate";
+  }
+  return "?";
+}
+
+ProcessorState ProcessorActivity::state() const {
+  if (cpu_ == ProcessorState::compute) return ProcessorState::compute;
+  if (cpu_ == ProcessorState::communicate || transfers_ > 0) return ProcessorState::communicate;
+  return ProcessorState::idle;
+}
+
+void ProcessorActivity::settle(double t) {
+  const ProcessorState next = state();
+  const std::string& next_label = cpu_ == ProcessorState::idle ? std::string() : label_;
+  if (next == current_ && next_label == current_label_) return;
+  const double elapsed = t - since_us_;
+  if (current_ != ProcessorState::idle) {
+    total_us_[int(current_)] += elapsed;
+    last_busy_us_ = t;
+    if (keep_intervals_ && elapsed > 0)
+      intervals_.push_back({since_us_, t, int(current_), current_label_});
+  }
+  if (next != ProcessorState::idle && first_busy_us_ < 0) first_busy_us_ = t;
+  current_ = next;
+  current_label_ = next_label;
+  since_us_ = t;
+}
+
+void ProcessorActivity::set_cpu(ProcessorState cpu, const std::string& label) {
+  cpu_ = cpu;
+  label_ = label;
+  settle(now_us());
+}
+
+void ProcessorActivity::transfer_begin() {
+  ++transfers_;
+  settle(now_us());
+}
+
+void ProcessorActivity::transfer_end() {
+  --transfers_;
+  settle(now_us());
+}
+
+void ProcessorActivity::close(const sc_core::sc_time& end) {
+  cpu_ = ProcessorState::idle;
+  transfers_ = 0;
+  settle(end.to_seconds() * 1e6);
+}
+
+void LinkActivity::packet(const sc_core::sc_time& start, const sc_core::sc_time& duration, bool data) {
+  const double d = duration.to_seconds() * 1e6;
+  busy_us_ += d;
+  if (keep_intervals_) {
+    const double s = start.to_seconds() * 1e6;
+    // Adjacent packets merge into one interval so a streaming link is one slice, not thousands.
+    if (!intervals_.empty() && intervals_.back().end_us >= s - 1e-9)
+      intervals_.back().end_us = s + d;
+    else
+      intervals_.push_back({s, s + d, 1, data ? "data" : "ack"});
+  }
+}
+
+void LinkActivity::message_done(std::int64_t bytes, const std::string&) {
+  bytes_ += bytes;
+  ++messages_;
+}
+
+}  // namespace t800

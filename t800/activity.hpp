@@ -1,0 +1,73 @@
+// Per-processor and per-link accounting of time. A processor is, at each instant, computing (its CPU runs a
+// compute block), communicating (its CPU runs communication instructions, or one of its link engines moves a
+// message for one of its processes) or idle. Totals are always kept; intervals only when a trace asks for them
+// (DESIGN.md: "when no trace is asked for, nothing per-interval is stored").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <systemc>
+
+namespace t800 {
+
+enum class ProcessorState { idle, compute, communicate };
+const char* to_string(ProcessorState state);
+
+struct Interval {
+  double start_us = 0, end_us = 0;
+  int state = 0;  // ProcessorState for processors, 1 = busy for link directions
+  std::string label;
+};
+
+class ProcessorActivity {
+ public:
+  void set_cpu(ProcessorState cpu, const std::string& label = {});
+  void transfer_begin();
+  void transfer_end();
+  void keep_intervals(bool keep) { keep_intervals_ = keep; }
+  void close(const sc_core::sc_time& end);  // settles the running state at the end of the simulation
+
+  double compute_us() const { return total_us_[int(ProcessorState::compute)]; }
+  double communicate_us() const { return total_us_[int(ProcessorState::communicate)]; }
+  double busy_us() const { return compute_us() + communicate_us(); }
+  // When it first and last left the idle state (the span of its work), in microseconds.
+  double first_busy_us() const { return first_busy_us_; }
+  double last_busy_us() const { return last_busy_us_; }
+  const std::vector<Interval>& intervals() const { return intervals_; }
+
+ private:
+  ProcessorState state() const;
+  void settle(double now_us);
+  ProcessorState cpu_ = ProcessorState::idle;
+  std::string label_;
+  int transfers_ = 0;
+  ProcessorState current_ = ProcessorState::idle;
+  std::string current_label_;
+  double since_us_ = 0;
+  double total_us_[3] = {0, 0, 0};
+  double first_busy_us_ = -1, last_busy_us_ = 0;
+  bool keep_intervals_ = false;
+  std::vector<Interval> intervals_;
+};
+
+// One direction of a link, as the wire carrying its data sees it.
+class LinkActivity {
+ public:
+  void packet(const sc_core::sc_time& start, const sc_core::sc_time& duration, bool data);
+  void message_done(std::int64_t bytes, const std::string& label);
+  void keep_intervals(bool keep) { keep_intervals_ = keep; }
+
+  std::int64_t bytes() const { return bytes_; }
+  std::int64_t messages() const { return messages_; }
+  double busy_us() const { return busy_us_; }  // time its wire carries packets (data and acknowledges)
+  const std::vector<Interval>& intervals() const { return intervals_; }
+
+ private:
+  std::int64_t bytes_ = 0, messages_ = 0;
+  double busy_us_ = 0;
+  bool keep_intervals_ = false;
+  std::vector<Interval> intervals_;
+};
+
+}  // namespace t800

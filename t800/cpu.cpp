@@ -1,0 +1,113 @@
+#include "t800/cpu.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "t800/timing_table.hpp"
+
+namespace t800 {
+
+using sc_core::sc_time;
+using sc_core::sc_time_stamp;
+using sc_core::SC_NS;
+using sc_core::SC_ZERO_TIME;
+
+namespace {
+const sc_time kTimeslice(timing::kTimesliceUs, sc_core::SC_US);
+}
+
+Cpu::Cpu(double cycle_ns, ProcessorActivity& activity, int interrupt_latency_cycles)
+    : cycle_(cycle_ns, SC_NS), latency_(cycle_ * double(interrupt_latency_cycles)), activity_(activity) {}
+
+void Cpu::make_ready(ProcessDescriptor& p) {
+  if (p.priority == Priority::high) {
+    ready_high_.push_back(&p);
+    if (running_ && running_->priority == Priority::low && !preempt_pending_) {
+      // The running low-priority process keeps the CPU for the interrupt latency, then is preempted.
+      preempt_pending_ = true;
+      preempt_at_ = sc_time_stamp() + latency_;
+      running_->interrupt.notify(latency_);
+    }
+  } else {
+    ready_low_.push_back(&p);
+    // A lone low-priority process runs unsliced; now that it has company it must watch its timeslice.
+    if (running_ && running_->priority == Priority::low) running_->interrupt.notify(SC_ZERO_TIME);
+  }
+}
+
+void Cpu::dispatch_next() {
+  std::deque<ProcessDescriptor*>& queue = !ready_high_.empty() ? ready_high_ : ready_low_;
+  if (queue.empty()) {
+    running_ = nullptr;
+    return;
+  }
+  running_ = queue.front();
+  queue.pop_front();
+  if (running_->priority == Priority::high) preempt_pending_ = false;
+  running_->dispatched_at = sc_time_stamp();
+  ++stats_.dispatches;
+  running_->wake.notify(SC_ZERO_TIME);
+}
+
+void Cpu::acquire(ProcessDescriptor& p) {
+  if (running_ == &p) return;
+  make_ready(p);
+  if (!running_) dispatch_next();
+  while (running_ != &p) sc_core::wait(p.wake);
+}
+
+void Cpu::deschedule(ProcessDescriptor& p) {
+  if (running_ != &p) return;
+  dispatch_next();
+}
+
+// A low-priority process is descheduled at the next descheduling point once it has run past the second
+// timeslice tick after it was dispatched (so between one and two timeslices), if another one is waiting.
+sc_time Cpu::slice_end(const ProcessDescriptor& p) const {
+  const double ticks = std::floor(p.dispatched_at / kTimeslice);
+  return kTimeslice * (ticks + 2.0);
+}
+
+bool Cpu::must_yield(const ProcessDescriptor& p) const {
+  if (p.priority == Priority::high) return false;
+  const sc_time now = sc_time_stamp();
+  if (preempt_pending_ && now >= preempt_at_) return true;
+  return !ready_low_.empty() && now >= slice_end(p);
+}
+
+void Cpu::yield(ProcessDescriptor& p, bool preempted) {
+  // A preempted process resumes before any other low-priority process (the T800 saves it in a register).
+  if (preempted) {
+    ready_low_.push_front(&p);
+    ++stats_.preemptions;
+  } else {
+    ready_low_.push_back(&p);
+    ++stats_.timeslices;
+  }
+  dispatch_next();
+  while (running_ != &p) sc_core::wait(p.wake);
+}
+
+void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind, const std::string& label) {
+  acquire(p);
+  sc_time remaining = cycles(n);
+  while (remaining > SC_ZERO_TIME) {
+    if (must_yield(p)) {
+      yield(p, preempt_pending_ && sc_time_stamp() >= preempt_at_);
+      continue;
+    }
+    sc_time limit = remaining;
+    if (p.priority == Priority::low) {
+      const sc_time now = sc_time_stamp();
+      if (preempt_pending_) limit = std::min(limit, preempt_at_ - now);
+      if (!ready_low_.empty()) limit = std::min(limit, slice_end(p) - now);
+    }
+    const sc_time start = sc_time_stamp();
+    activity_.set_cpu(kind, label);
+    sc_core::wait(limit, p.interrupt);
+    activity_.set_cpu(ProcessorState::idle);
+    remaining -= sc_time_stamp() - start;
+  }
+}
+
+}  // namespace t800

@@ -1,0 +1,68 @@
+// The T800's CPU and its microcoded scheduler: one processor shared by the processes placed on it.
+// High priority processes run until they deschedule and preempt low priority ones (after the interrupt
+// latency); low priority processes are round-robin and timesliced (t800-timing.md section 7).
+//
+// Every call is made from the SystemC thread of the process concerned. A process holds the CPU from the moment
+// it is dispatched until it deschedules (communication, end), exactly as on the hardware.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <string>
+
+#include <systemc>
+
+#include "t800/activity.hpp"
+
+namespace t800 {
+
+enum class Priority { high, low };
+
+// The scheduler's view of one process (the T800's process descriptor: workspace and priority).
+struct ProcessDescriptor {
+  std::string name;
+  Priority priority = Priority::low;
+  sc_core::sc_event wake;       // dispatched
+  sc_core::sc_event interrupt;  // a running compute block must look at the queues again
+  sc_core::sc_time dispatched_at;
+};
+
+struct CpuStatistics {
+  std::int64_t dispatches = 0;
+  std::int64_t preemptions = 0;
+  std::int64_t timeslices = 0;
+};
+
+class Cpu {
+ public:
+  Cpu(double cycle_ns, ProcessorActivity& activity, int interrupt_latency_cycles);
+
+  // Runs `cycles` of work for p, waiting for the CPU first if p does not hold it. p still holds the CPU after.
+  void execute(ProcessDescriptor& p, std::int64_t cycles, ProcessorState kind, const std::string& label);
+  // p stops using the CPU (blocks on communication or ends); the next ready process is dispatched.
+  void deschedule(ProcessDescriptor& p);
+  // p becomes ready and waits until it is dispatched.
+  void acquire(ProcessDescriptor& p);
+
+  bool holds(const ProcessDescriptor& p) const { return running_ == &p; }
+  sc_core::sc_time cycles(std::int64_t n) const { return cycle_ * double(n); }
+  const CpuStatistics& statistics() const { return stats_; }
+
+ private:
+  void make_ready(ProcessDescriptor& p);
+  void dispatch_next();
+  void yield(ProcessDescriptor& p, bool to_front);
+  sc_core::sc_time slice_end(const ProcessDescriptor& p) const;
+  bool must_yield(const ProcessDescriptor& p) const;
+
+  sc_core::sc_time cycle_;
+  sc_core::sc_time latency_;
+  ProcessorActivity& activity_;
+  ProcessDescriptor* running_ = nullptr;
+  std::deque<ProcessDescriptor*> ready_high_, ready_low_;
+  bool preempt_pending_ = false;
+  sc_core::sc_time preempt_at_;
+  CpuStatistics stats_;
+};
+
+}  // namespace t800

@@ -1,0 +1,24 @@
+#include <iostream>
+#include <string>
+
+#include "network/config_error.hpp"
+#include "tools/commands.hpp"
+#include "tools/scene.hpp"
+
+namespace tools {
+
+void add_check_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("check", "Validate a scene or topology file and exit non-zero on errors");
+  auto file = std::make_shared<std::string>();
+  cmd->add_option("file", *file, "scene or topology TOML file")->required();
+  cmd->callback([file] {
+    try {
+      std::cout << "ok: " << check_file(*file) << "\n";
+    } catch (const network::ConfigError& e) {
+      std::cerr << e.what() << "\n";
+      std::exit(kExitBadInput);
+    }
+  });
+}
+
+}  // namespace tools

@@ -1,0 +1,16 @@
+// The t800sim sub-commands. Each registers itself on the application; main.cpp only assembles them.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace tools {
+
+void add_run_command(CLI::App& app);
+void add_check_command(CLI::App& app);
+
+// Exit codes shared by the commands.
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;     // the simulated program did not finish (deadlock) or a check failed
+constexpr int kExitBadInput = 2;    // a configuration or command-line error
+
+}  // namespace tools

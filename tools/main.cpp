@@ -1,0 +1,24 @@
+// t800sim: the command line. libsystemc.so provides main() and calls sc_main().
+#include <cstdlib>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <systemc>
+
+#include "tools/commands.hpp"
+
+int sc_main(int argc, char* argv[]) {
+  CLI::App app{
+      "t800sim: a cycle-approximate simulator of INMOS T800 transputer networks.\n"
+      "Scenes (configs/scenes/*.toml) name a topology and a workload; see README.md."};
+  app.require_subcommand(1);
+  tools::add_run_command(app);
+  tools::add_check_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? tools::kExitOk : tools::kExitBadInput;
+  }
+  return tools::kExitOk;
+}

@@ -1,0 +1,64 @@
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "network/config_error.hpp"
+#include "tools/commands.hpp"
+#include "tools/report_format.hpp"
+#include "tools/scene.hpp"
+#include "workloads/run/run.hpp"
+
+namespace tools {
+
+namespace {
+
+struct RunArgs {
+  std::string scene;
+  std::vector<std::string> overrides;
+  bool json = false;
+};
+
+workloads::RunInputs inputs_from(const Scene& scene) {
+  workloads::RunInputs in;
+  in.name = scene.name;
+  in.topology = scene.topology;
+  in.options.link = scene.link;
+  in.kind = scene.workload_kind;
+  in.params = scene.workload;
+  return in;
+}
+
+int run_scene(const RunArgs& args) {
+  const Scene scene = load_scene(args.scene, args.overrides);
+  const workloads::RunReport report = workloads::run(inputs_from(scene));
+  std::cout << (args.json ? format_json(report) : format_text(report));
+  return report.blocked.empty() ? kExitOk : kExitFailure;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app) {
+  auto args = std::make_shared<RunArgs>();
+  auto* cmd = app.add_subcommand("run", "Simulate one scene and print a report");
+  cmd->add_option("scene", args->scene, "scene TOML file (configs/scenes/*.toml)")->required();
+  cmd->add_option("--set", args->overrides,
+                  "override a scene key, e.g. --set workload.bytes=4000 --set network.link_speed_mbps=10")
+      ->type_name("KEY=VALUE");
+  cmd->add_flag("--json", args->json, "print one JSON object instead of the text report");
+  cmd->callback([args] {
+    int code = kExitOk;
+    try {
+      code = run_scene(*args);
+    } catch (const network::ConfigError& e) {
+      std::cerr << e.what() << "\n";
+      code = kExitBadInput;
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      code = kExitBadInput;
+    }
+    std::exit(code);
+  });
+}
+
+}  // namespace tools

@@ -1,0 +1,33 @@
+// A scene = topology + workload + options, read once from a TOML file (plus --set overrides) into plain
+// structs. All validation happens here (DESIGN.md "How data flows", step 1).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "network/topology.hpp"
+#include "t800/processor_config.hpp"
+#include "workloads/params.hpp"
+
+namespace tools {
+
+struct Scene {
+  std::string file;
+  std::string name;
+  std::string description;
+  network::Topology topology;
+  t800::LinkConfig link;  // network.link_speed_mbps, network.link_protocol: defaults for every link
+  std::string workload_kind;
+  workloads::Params workload;  // validated against the workload's declared parameters
+};
+
+// Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the value is
+// read as a TOML value (4000, 2.5, "text", true, [1,2]) and, if that fails, as a bare string. Overrides are
+// applied before validation, so a bad override is reported naming the flag. Throws network::ConfigError.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// `t800sim check FILE`: validates a scene or a topology file (a scene has a [workload] table).
+// Returns a one-line summary on success; throws network::ConfigError otherwise.
+std::string check_file(const std::string& path);
+
+}  // namespace tools

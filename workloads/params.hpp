@@ -1,0 +1,58 @@
+// Parameters a workload declares (name, type, default, range, help). The scene loader validates a scene's
+// [workload] table against these declarations; workloads read typed values back. No TOML here.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace workloads {
+
+using ParamValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>>;
+
+enum class ParamType { flag, integer, real, text, real_list };
+
+struct ParamSpec {
+  std::string name;
+  ParamType type;
+  ParamValue default_value;
+  std::string help;
+  std::optional<double> min, max;    // numeric bounds (inclusive), integer and real
+  std::vector<std::string> choices;  // allowed text values; empty = any
+};
+
+struct WorkloadInfo {
+  std::string kind;  // the scene's workload.kind
+  std::string summary;
+  std::vector<ParamSpec> params;
+  const ParamSpec* find(const std::string& name) const;
+};
+
+// Validated values: every declared parameter is present (defaults filled in).
+class Params {
+ public:
+  void set(const std::string& name, ParamValue value) { values_[name] = std::move(value); }
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+  bool flag(const std::string& name) const;
+  std::int64_t integer(const std::string& name) const;
+  double real(const std::string& name) const;  // accepts an integer value too
+  const std::string& text(const std::string& name) const;
+  const std::vector<double>& real_list(const std::string& name) const;
+  const std::map<std::string, ParamValue>& values() const { return values_; }
+
+ private:
+  const ParamValue& at(const std::string& name) const;
+  std::map<std::string, ParamValue> values_;
+};
+
+// Every workload kind the simulator knows, with its parameters (workloads/catalog.cpp).
+const std::vector<WorkloadInfo>& workload_catalog();
+const WorkloadInfo* find_workload(const std::string& kind);
+
+// Human-readable type name ("integer", "real", ...), for error messages and help.
+const char* to_string(ParamType type);
+
+}  // namespace workloads

@@ -1,0 +1,107 @@
+#include "workloads/run/run.hpp"
+
+#include <chrono>
+
+#include "workloads/run/workload.hpp"
+
+namespace workloads {
+
+namespace {
+
+std::vector<ProcessorReport> processor_reports(const network::Machine& m, double total_us) {
+  std::vector<ProcessorReport> out;
+  for (int i = 0; i < m.processors(); ++i) {
+    const t800::ProcessorActivity& a = m.transputer(i).activity();
+    ProcessorReport r;
+    r.name = m.node_name(i);
+    r.compute_us = a.compute_us();
+    r.communicate_us = a.communicate_us();
+    r.busy_us = a.busy_us();
+    r.idle_us = total_us - r.busy_us;
+    r.utilisation = total_us > 0 ? r.busy_us / total_us : 0;
+    out.push_back(r);
+  }
+  return out;
+}
+
+std::vector<LinkReport> link_reports(const network::Machine& m, double total_us) {
+  std::vector<LinkReport> out;
+  for (const auto& info : m.links()) {
+    for (int d = 0; d < 2; ++d) {
+      const t800::LinkActivity& a = info.link->activity(d);
+      LinkReport r;
+      r.name = m.node_name(info.node[d]) + "->" + m.node_name(info.node[1 - d]) + " (" + info.name + ")";
+      r.bytes = a.bytes();
+      r.messages = a.messages();
+      r.busy_us = a.busy_us();
+      r.utilisation = total_us > 0 ? r.busy_us / total_us : 0;
+      out.push_back(r);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+RunReport run(const RunInputs& in) {
+  const auto start = std::chrono::steady_clock::now();
+  network::Machine machine(in.topology, in.options);
+  std::unique_ptr<Workload> workload = make_workload(in.kind, in.params, in.topology);
+  workload->build(machine);
+  RunReport report;
+  report.name = in.name;
+  report.blocked = machine.run();
+  report.simulated_us = machine.simulated_us();
+  report.events = sc_core::sc_delta_count();
+  report.processors = processor_reports(machine, report.simulated_us);
+  report.links = link_reports(machine, report.simulated_us);
+  if (report.blocked.empty()) report.workload = workload->results(machine);
+  report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+ResultValue RunReport::to_value() const {
+  ResultValue v;
+  v.set("scene", name);
+  v.set("simulated_us", simulated_us);
+  v.set("wall_s", wall_s);
+  v.set("events", std::int64_t(events));
+  ResultValue procs = ResultValue::list();
+  for (const ProcessorReport& p : processors) {
+    ResultValue r;
+    r.set("name", p.name);
+    r.set("busy_us", p.busy_us);
+    r.set("compute_us", p.compute_us);
+    r.set("communicate_us", p.communicate_us);
+    r.set("idle_us", p.idle_us);
+    r.set("utilisation", p.utilisation);
+    procs.push(r);
+  }
+  v.set("processors", procs);
+  ResultValue links_value = ResultValue::list();
+  for (const LinkReport& l : links) {
+    ResultValue r;
+    r.set("name", l.name);
+    r.set("bytes", l.bytes);
+    r.set("messages", l.messages);
+    r.set("busy_us", l.busy_us);
+    r.set("utilisation", l.utilisation);
+    links_value.push(r);
+  }
+  v.set("links", links_value);
+  if (!blocked.empty()) {
+    ResultValue b = ResultValue::list();
+    for (const auto& p : blocked) {
+      ResultValue r;
+      r.set("process", p.process);
+      r.set("processor", p.processor);
+      r.set("status", p.status);
+      b.push(r);
+    }
+    v.set("deadlock", b);
+  }
+  v.set("workload", workload);
+  return v;
+}
+
+}  // namespace workloads

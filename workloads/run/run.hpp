@@ -1,0 +1,48 @@
+// One simulation from plain inputs to a report: elaborate the machine, build the workload, run, account.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "network/machine.hpp"
+#include "workloads/params.hpp"
+#include "workloads/run/result_value.hpp"
+
+namespace workloads {
+
+struct RunInputs {
+  std::string name;
+  network::Topology topology;
+  network::MachineOptions options;
+  std::string kind;
+  Params params;
+};
+
+struct ProcessorReport {
+  std::string name;
+  double busy_us = 0, compute_us = 0, communicate_us = 0, idle_us = 0, utilisation = 0;
+};
+
+struct LinkReport {
+  std::string name;  // "P0.link1->P1.link0": the direction whose data it is
+  std::int64_t bytes = 0, messages = 0;
+  double busy_us = 0, utilisation = 0;  // time its wire carries packets (its data, the reverse acknowledges)
+};
+
+struct RunReport {
+  std::string name;
+  double simulated_us = 0;
+  double wall_s = 0;
+  std::uint64_t events = 0;  // SystemC delta cycles: one per batch of process activations at one time
+  std::vector<ProcessorReport> processors;
+  std::vector<LinkReport> links;
+  std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
+  ResultValue workload;
+
+  ResultValue to_value() const;
+};
+
+// Runs one simulation. Only one per OS process (SystemC cannot be restarted).
+RunReport run(const RunInputs& inputs);
+
+}  // namespace workloads

@@ -1,0 +1,39 @@
+#include "workloads/run/workload.hpp"
+
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#include "workloads/links/link_workloads.hpp"
+
+namespace workloads {
+
+namespace {
+using Factory = std::function<std::unique_ptr<Workload>(const Params&, const network::Topology&)>;
+
+const std::map<std::string, Factory>& factories() {
+  static const std::map<std::string, Factory> f = {
+      {"pingpong", make_pingpong},
+      {"link-stream", make_link_stream},
+  };
+  return f;
+}
+}  // namespace
+
+std::unique_ptr<Workload> make_workload(const std::string& kind, const Params& params,
+                                        const network::Topology& topology) {
+  auto it = factories().find(kind);
+  if (it == factories().end()) throw std::invalid_argument("no implementation for workload kind " + kind);
+  return it->second(params, topology);
+}
+
+int processor_param(const Params& params, const std::string& name, const network::Topology& topology,
+                    int fallback) {
+  const std::string& value = params.text(name);
+  if (value.empty()) return fallback;
+  const int index = topology.find(value);
+  if (index < 0) throw std::invalid_argument("workload." + name + ": no processor named " + value);
+  return index;
+}
+
+}  // namespace workloads
