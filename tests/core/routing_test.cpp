@@ -1,0 +1,94 @@
+// A message over h hops through software routers follows the store-and-forward formula built from the model's
+// own constants (t800-timing.md sections 3 and 6).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core_fixtures.hpp"
+#include "network/channel.hpp"
+
+namespace {
+
+constexpr double kCycleNs = 50.0;  // T800-20
+constexpr double kMbps = 20.0;
+
+// One message of B bytes on an uncontended link, from its first data bit to the arrival of its last byte.
+double link_time_ns(std::int64_t bytes) {
+  using namespace t800::timing;
+  const double bit = 1000.0 / kMbps;
+  const double process = kAckProcessBits * bit + kAckProcessNs;
+  const double period = std::max(kDataPacketBits * bit, kAckDetectNs + kAckPacketBits * bit + process);
+  return double(bytes - 1) * period + kDataPacketBits * bit;
+}
+
+class RoutedMessage : public ::testing::TestWithParam<int> {};
+
+TEST_P(RoutedMessage, FollowsStoreAndForwardFormula) {
+  const int hops = GetParam();
+  const std::int64_t payload = 96;
+  network::Machine m(core_test::chain(hops), core_test::options(kMbps));
+  auto& c = m.channel("far", 0, hops);
+  double arrival_us = 0;
+  m.spawn(0, "sender", t800::Priority::low, [&](network::Process& p) { p.out(c, {payload, {}, "x"}); });
+  m.spawn(hops, "receiver", t800::Priority::low, [&](network::Process& p) {
+    p.in(c);
+    arrival_us = p.now_us();
+  });
+  ASSERT_TRUE(m.run().empty());
+  ASSERT_EQ(c.kind, network::Channel::Kind::routed);
+
+  // Sender set-up, then per hop the link time and (except at the end) the router's output set-up, then the
+  // last router's copy into the reader's buffer, and the router re-arming its input (19c) before the
+  // low-priority reader gets the CPU: T(h) = 19c + h L(B) + (h-1) 19c + (2w+19)c + 19c.
+  using namespace t800::timing;
+  const std::int64_t B = payload + network::kRouteHeaderBytes;
+  const double copy = kCommPerWord * ((payload + 3) / 4) + kCommFixed;
+  const double expected_ns =
+      kCommFixed * kCycleNs * hops + hops * link_time_ns(B) + (copy + kCommFixed) * kCycleNs;
+  EXPECT_NEAR(arrival_us * 1000.0, expected_ns, 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Hops, RoutedMessage, ::testing::Values(2, 3, 4, 6));
+
+// Neighbours alone on a link direction talk directly: no router, no header.
+TEST(DirectChannel, NeighboursUseTheLinkDirectly) {
+  network::Machine m(core_test::chain(1), core_test::options(kMbps));
+  auto& c = m.channel("near", 0, 1);
+  double arrival_us = 0;
+  m.spawn(0, "sender", t800::Priority::low, [&](network::Process& p) { p.out(c, {96, {}, "x"}); });
+  m.spawn(1, "receiver", t800::Priority::low, [&](network::Process& p) {
+    p.in(c);
+    arrival_us = p.now_us();
+  });
+  ASSERT_TRUE(m.run().empty());
+  EXPECT_EQ(c.kind, network::Channel::Kind::direct);
+  EXPECT_NEAR(arrival_us * 1000.0, t800::timing::kCommFixed * kCycleNs + link_time_ns(96), 1.0);
+}
+
+// The payload a workload sends is the payload it receives, also through routers.
+TEST(RoutedChannel, CarriesThePayload) {
+  network::Machine m(core_test::chain(3), core_test::options(kMbps));
+  auto& c = m.channel("far", 0, 3);
+  std::vector<double> got;
+  m.spawn(0, "sender", t800::Priority::low, [&](network::Process& p) {
+    p.out(c, {24, std::vector<double>{1.5, -2.0, 3.25}, "values"});
+  });
+  m.spawn(3, "receiver", t800::Priority::low,
+          [&](network::Process& p) { got = std::any_cast<std::vector<double>>(p.in(c).payload); });
+  ASSERT_TRUE(m.run().empty());
+  EXPECT_EQ(got, (std::vector<double>{1.5, -2.0, 3.25}));
+}
+
+// A program that waits forever is reported, naming the process and what it waits for.
+TEST(Deadlock, IsReportedWithTheBlockedProcess) {
+  network::Machine m(core_test::chain(1), core_test::options(kMbps));
+  auto& c = m.channel("never", 1, 0);
+  m.spawn(0, "waiter", t800::Priority::low, [&](network::Process& p) { p.in(c); });
+  const auto blocked = m.run();
+  ASSERT_EQ(blocked.size(), 1u);
+  EXPECT_EQ(blocked[0].process, "waiter");
+  EXPECT_EQ(blocked[0].processor, "P0");
+  EXPECT_NE(blocked[0].status.find("never"), std::string::npos);
+}
+
+}  // namespace
