@@ -1,0 +1,284 @@
+#include "network/topology_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <initializer_list>
+
+namespace network {
+
+namespace {
+
+// Where a node is. A node that came from somewhere other than `file` (a --set override parsed on
+// its own) keeps its origin's name but not its line numbers, which would mean nothing in `file`.
+SourcePos pos_of(const toml::source_region& source, const std::string& file) {
+  if (source.path && *source.path != file) return {*source.path, 0, 0};
+  if (source.begin.line == 0) return {file, 0, 0};
+  return {file, static_cast<int>(source.begin.line), static_cast<int>(source.begin.column)};
+}
+
+std::string type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string:
+      return "string";
+    case toml::node_type::integer:
+      return "integer";
+    case toml::node_type::floating_point:
+      return "floating-point number";
+    case toml::node_type::boolean:
+      return "boolean";
+    case toml::node_type::table:
+      return "table";
+    case toml::node_type::array:
+      return "array";
+    case toml::node_type::date:
+      return "date";
+    case toml::node_type::time:
+      return "time";
+    case toml::node_type::date_time:
+      return "date-time";
+    case toml::node_type::none:
+      break;
+  }
+  return "nothing";
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+// toml++'s value<double>() gives nothing for integers beyond 2^53; convert them ourselves.
+double number(const toml::node& node) {
+  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+  return node.as_floating_point()->get();
+}
+
+std::string number_text(double value) {
+  if (std::abs(value) < 1e15 && value == std::floor(value))
+    return std::to_string(static_cast<long long>(value));
+  std::string text = std::to_string(value);
+  while (text.back() == '0') text.pop_back();
+  return text;
+}
+
+// Reads one topology table; every error carries the position of the node it is about.
+class Reader {
+ public:
+  Reader(const toml::table& root, std::string file) : root_(root), file_(std::move(file)) {}
+  Topology read();
+
+ private:
+  SourcePos pos(const toml::node& node) const { return pos_of(node.source(), file_); }
+  [[noreturn]] void fail(const toml::node& node, const std::string& message) const {
+    throw ConfigError(pos(node), message);
+  }
+  void check_keys(const toml::table& table, std::initializer_list<const char*> valid,
+                  const std::string& where) const;
+  const toml::node& expect(const toml::node& node, toml::node_type type, const std::string& key,
+                           const char* type_text) const;
+  std::string text(const toml::table& table, const std::string& key, std::string fallback) const;
+  const toml::array* tables(const std::string& key) const;
+
+  ProcessorSpec processor(const toml::table& table) const;
+  t800::MemoryConfig memory(const toml::node& node) const;
+  LinkEnd end(const toml::node& node, const Topology& t) const;
+  Connection link(const toml::table& table, const Topology& t) const;
+
+  const toml::table& root_;
+  std::string file_;
+};
+
+void Reader::check_keys(const toml::table& table, std::initializer_list<const char*> valid,
+                        const std::string& where) const {
+  std::vector<std::string> names(valid.begin(), valid.end());
+  for (auto&& [key, value] : table) {
+    bool known = false;
+    for (const std::string& name : names) known = known || key.str() == name;
+    if (!known)
+      throw ConfigError(pos_of(key.source(), file_), "unknown key '" + std::string(key.str()) +
+                                                         "' in " + where + "; valid keys are " +
+                                                         join(names));
+  }
+}
+
+const toml::node& Reader::expect(const toml::node& node, toml::node_type type,
+                                 const std::string& key, const char* type_text) const {
+  if (node.type() != type)
+    fail(node, "'" + key + "': expected " + type_text + ", got " + type_name(node));
+  return node;
+}
+
+std::string Reader::text(const toml::table& table, const std::string& key,
+                         std::string fallback) const {
+  const toml::node* node = table.get(key);
+  if (!node) return fallback;
+  return *expect(*node, toml::node_type::string, key, "a string").value<std::string>();
+}
+
+// [[processor]] and [[link]]: an array whose elements are tables; nullptr when absent.
+const toml::array* Reader::tables(const std::string& key) const {
+  const toml::node* node = root_.get(key);
+  if (!node) return nullptr;
+  const std::string hint =
+      "'" + key + "' must be written [[" + key + "]]: expected an array of tables";
+  if (!node->is_array()) fail(*node, hint + ", got " + type_name(*node));
+  for (const toml::node& element : *node->as_array())
+    if (!element.is_table()) fail(element, hint + ", got an element of type " + type_name(element));
+  return node->as_array();
+}
+
+// Names appear in link ends ("NAME.linkN"), so they stay plain words.
+bool valid_name(const std::string& name) {
+  if (name.empty()) return false;
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') return false;
+  return true;
+}
+
+ProcessorSpec Reader::processor(const toml::table& table) const {
+  check_keys(table, {"name", "type", "memory"}, "[[processor]]");
+  const toml::node* name = table.get("name");
+  if (!name) fail(table, "[[processor]] has no name: add name = \"P1\" (any unique name)");
+  ProcessorSpec spec;
+  spec.name = *expect(*name, toml::node_type::string, "name", "a string").value<std::string>();
+  spec.where = pos(*name);
+  if (!valid_name(spec.name))
+    fail(*name, "processor name '" + spec.name +
+                    "' is not valid: use letters, digits, '_' and '-' only (e.g. \"P1\")");
+  if (const toml::node* type = table.get("type")) {
+    const std::string text =
+        *expect(*type, toml::node_type::string, "type", "a string").value<std::string>();
+    auto grade = t800::parse_speed_grade(text);
+    if (!grade)
+      fail(*type,
+           "unknown processor type '" + text + "'; valid types are T800-20, T800-25, T800-30");
+    spec.config.grade = *grade;
+  }
+  if (const toml::node* mem = table.get("memory")) spec.config.memory = memory(*mem);
+  return spec;
+}
+
+t800::MemoryConfig Reader::memory(const toml::node& node) const {
+  const toml::table& table = *expect(node, toml::node_type::table, "memory", "a table").as_table();
+  check_keys(table, {"data", "code", "wait_states"}, "memory");
+  t800::MemoryConfig config;
+  for (const char* key : {"data", "code"}) {
+    const toml::node* value = table.get(key);
+    if (!value) continue;
+    const std::string text =
+        *expect(*value, toml::node_type::string, key, "a string").value<std::string>();
+    auto placement = t800::parse_placement(text);
+    if (!placement)
+      fail(*value, "unknown memory placement '" + text + "' for " + key +
+                       "; valid placements are onchip, external");
+    (std::string(key) == "data" ? config.data : config.code) = *placement;
+  }
+  if (const toml::node* ws = table.get("wait_states")) {
+    const auto n =
+        *expect(*ws, toml::node_type::integer, "wait_states", "an integer").value<std::int64_t>();
+    if (n < 0)
+      fail(*ws, "wait_states = " + std::to_string(n) +
+                    " is negative: give the wait states per external memory access, 0 or more");
+    // A sanity bound: real boards used a handful; this only keeps the int conversion safe.
+    if (n > 1000) fail(*ws, "wait_states = " + std::to_string(n) + " is too large: at most 1000");
+    config.wait_states = static_cast<int>(n);
+  }
+  return config;
+}
+
+LinkEnd Reader::end(const toml::node& node, const Topology& t) const {
+  const std::string text =
+      *expect(node, toml::node_type::string, "link end", "a string").value<std::string>();
+  const auto dot = text.rfind('.');
+  const std::string link = dot == std::string::npos ? "" : text.substr(dot + 1);
+  const bool digits = link.size() > 4 && link.size() <= 8 && link.compare(0, 4, "link") == 0 &&
+                      link.find_first_not_of("0123456789", 4) == std::string::npos;
+  if (!digits || dot == 0)
+    fail(node, "malformed link end '" + text + "': expected NAME.linkN, e.g. \"P0.link1\"");
+  const std::string name = text.substr(0, dot);
+  const int index = std::stoi(link.substr(4));
+  const int p = t.find(name);
+  if (p < 0) {
+    std::vector<std::string> names;
+    for (const ProcessorSpec& spec : t.processors) names.push_back(spec.name);
+    fail(node, "unknown processor '" + name + "' in link end '" + text + "'; processors are " +
+                   join(names));
+  }
+  if (index >= kLinksPerProcessor)
+    fail(node, "link index " + std::to_string(index) + " in '" + text +
+                   "' is outside 0-3: a T800 has four links, link0 to link3");
+  return {p, index};
+}
+
+Connection Reader::link(const toml::table& table, const Topology& t) const {
+  check_keys(table, {"from", "to", "speed_mbps"}, "[[link]]");
+  Connection c;
+  c.where = pos(table);
+  for (const char* key : {"from", "to"}) {
+    const toml::node* node = table.get(key);
+    if (!node)
+      fail(table, std::string("[[link]] has no '") + key +
+                      "': give both ends, e.g. from = " + "\"P0.link1\" and to = \"P1.link0\"");
+    (std::string(key) == "from" ? c.a : c.b) = end(*node, t);
+  }
+  if (const toml::node* speed = table.get("speed_mbps")) {
+    if (!speed->is_number())
+      fail(*speed, "'speed_mbps': expected a number, got " + type_name(*speed));
+    const double mbps = number(*speed);
+    if (!t800::is_valid_link_speed(mbps))
+      fail(*speed, "link speed " + number_text(mbps) +
+                       " Mbit/s is not supported: a T800 link runs at 5, 10 or 20 Mbit/s");
+    c.speed_mbps = mbps;
+  }
+  return c;
+}
+
+Topology Reader::read() {
+  check_keys(root_, {"name", "description", "host", "processor", "link"}, "a topology");
+  Topology t;
+  t.source = file_;
+  t.name = text(root_, "name", std::filesystem::path(file_).stem().string());
+  t.description = text(root_, "description", "");
+  const toml::array* processors = tables("processor");
+  if (!processors || processors->empty())
+    fail(root_, "the topology has no processors: add at least one [[processor]] with a name");
+  for (const toml::node& p : *processors) t.processors.push_back(processor(*p.as_table()));
+  const toml::node* host = root_.get("host");
+  if (!host)
+    fail(root_,
+         "no host connection: name the processor link wired to the host PC, e.g. host = "
+         "\"" +
+             t.processors.front().name + ".link0\"");
+  t.host = end(*host, t);
+  if (const toml::array* links = tables("link"))
+    for (const toml::node& l : *links) t.connections.push_back(link(*l.as_table(), t));
+  validate(t);
+  return t;
+}
+
+}  // namespace
+
+Topology parse_topology(const toml::table& table, const std::string& file) {
+  return Reader(table, file).read();
+}
+
+Topology load_topology(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw ConfigError({path, 0, 0}, "this is a directory, not a topology file");
+  if (!fs::exists(path, ec)) throw ConfigError({path, 0, 0}, "no such topology file");
+  try {
+    const toml::table root = toml::parse_file(path);
+    return parse_topology(root, path);
+  } catch (const toml::parse_error& e) {
+    throw ConfigError(pos_of(e.source(), path), std::string(e.description()));
+  }
+}
+
+}  // namespace network

@@ -1,0 +1,466 @@
+#include "tools/scene.hpp"
+
+#include <toml++/toml.h>
+
+#include <cctype>
+#include <climits>
+#include <cmath>
+#include <filesystem>
+#include <initializer_list>
+
+#include "network/families.hpp"
+#include "network/topology_file.hpp"
+
+namespace tools {
+
+namespace {
+
+namespace fs = std::filesystem;
+using network::ConfigError;
+using network::SourcePos;
+
+// Where a node is. Nodes from a --set override are parsed from a document named after the flag:
+// report the flag, without the meaningless line numbers of that one-line document.
+SourcePos pos_of(const toml::source_region& source, const std::string& file) {
+  if (source.path && *source.path != file) return {*source.path, 0, 0};
+  if (source.begin.line == 0) return {file, 0, 0};
+  return {file, static_cast<int>(source.begin.line), static_cast<int>(source.begin.column)};
+}
+
+std::string type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string:
+      return "string";
+    case toml::node_type::integer:
+      return "integer";
+    case toml::node_type::floating_point:
+      return "floating-point number";
+    case toml::node_type::boolean:
+      return "boolean";
+    case toml::node_type::table:
+      return "table";
+    case toml::node_type::array:
+      return "array";
+    case toml::node_type::date:
+      return "date";
+    case toml::node_type::time:
+      return "time";
+    case toml::node_type::date_time:
+      return "date-time";
+    case toml::node_type::none:
+      break;
+  }
+  return "nothing";
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+// toml++'s value<double>() gives nothing for integers beyond 2^53; convert them ourselves.
+double number(const toml::node& node) {
+  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+  return node.as_floating_point()->get();
+}
+
+std::string article(const std::string& noun) {
+  return std::string("aeiou").find(noun.front()) == std::string::npos ? "a " : "an ";
+}
+
+std::string number_text(double value) {
+  if (std::abs(value) < 1e15 && value == std::floor(value))
+    return std::to_string(static_cast<long long>(value));
+  std::string text = std::to_string(value);
+  while (text.back() == '0') text.pop_back();
+  return text;
+}
+
+std::string plural(std::size_t n, const char* word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+// Missing files and directories get a plain message; toml++ would read a directory as empty.
+void check_readable(const std::string& path, const char* what) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw ConfigError({path, 0, 0}, std::string("this is a directory, not a ") + what);
+  if (!fs::exists(path, ec)) throw ConfigError({path, 0, 0}, std::string("no such ") + what);
+}
+
+toml::table parse_file(const std::string& path, const char* what) {
+  check_readable(path, what);
+  try {
+    return toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw ConfigError(pos_of(e.source(), path), std::string(e.description()));
+  }
+}
+
+// --set overrides ---------------------------------------------------------------------------------
+
+bool bare_key_part(const std::string& part) {
+  if (part.empty()) return false;
+  for (char c : part)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') return false;
+  return true;
+}
+
+std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+std::string toml_quoted(const std::string& text) {
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') quoted += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) {
+      quoted += ' ';  // control characters cannot appear in a basic string
+      continue;
+    }
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+// "key = value" parsed as its own document named after the flag, so every node it creates (the
+// value and any intermediate tables) reports the flag as its position. A value that is not valid
+// TOML ("P1", "../x.toml") is taken as a bare string.
+toml::table parse_override(const std::string& key, const std::string& value,
+                           const std::string& flag) {
+  const bool one_line = value.find_first_of("\r\n") == std::string::npos;
+  if (one_line) {
+    try {
+      return toml::parse(std::string_view(key + " = " + value), std::string_view(flag));
+    } catch (const toml::parse_error&) {
+      // fall through: a bare string
+    }
+  }
+  return toml::parse(std::string_view(key + " = " + toml_quoted(value)), std::string_view(flag));
+}
+
+void apply_override(toml::table& root, const std::string& text) {
+  const std::string flag = "--set " + text;
+  const SourcePos at{flag, 0, 0};
+  const auto eq = text.find('=');
+  if (eq == std::string::npos)
+    throw ConfigError(at, "malformed override: expected KEY=VALUE, e.g. --set workload.bytes=4000");
+  const std::string key = trim(text.substr(0, eq));
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const auto dot = key.find('.', start);
+    parts.push_back(key.substr(start, dot == std::string::npos ? dot : dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  for (const std::string& part : parts)
+    if (!bare_key_part(part))
+      throw ConfigError(at, "malformed override key '" + key +
+                                "': expected a dotted key of letters, digits, '_' and '-', e.g. "
+                                "workload.bytes=4000");
+  toml::table parsed = parse_override(key, trim(text.substr(eq + 1)), flag);
+  // Walk down both trees; graft the parsed subtree where the scene has nothing yet.
+  toml::table* dst = &root;
+  toml::table* src = &parsed;
+  std::string prefix;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    auto it = src->find(parts[i]);
+    toml::node* existing = dst->get(parts[i]);
+    if (i + 1 == parts.size() || !existing) {
+      dst->insert_or_assign(it->first, std::move(it->second));
+      return;
+    }
+    prefix += (prefix.empty() ? "" : ".") + parts[i];
+    if (!existing->is_table())
+      throw ConfigError(at, "cannot set '" + key + "': '" + prefix + "' is " +
+                                article(type_name(*existing)) + type_name(*existing) +
+                                ", not a table");
+    dst = existing->as_table();
+    src = it->second.as_table();
+  }
+}
+
+// Scene reading -----------------------------------------------------------------------------------
+
+class SceneReader {
+ public:
+  SceneReader(const toml::table& root, std::string file) : root_(root), file_(std::move(file)) {}
+  Scene read();
+
+ private:
+  SourcePos pos(const toml::node& node) const { return pos_of(node.source(), file_); }
+  [[noreturn]] void fail(const toml::node& node, const std::string& message) const {
+    throw ConfigError(pos(node), message);
+  }
+  void check_keys(const toml::table& table, const std::vector<std::string>& valid,
+                  const std::string& where) const;
+  const toml::table& table(const toml::node& node, const std::string& key) const;
+  std::string text(const toml::node& node, const std::string& key) const;
+  std::string text_or(const toml::table& table, const std::string& key, std::string fallback) const;
+
+  t800::LinkConfig link_config(const toml::table& net) const;
+  network::Topology topology(const toml::table* net) const;
+  network::Topology generated(const toml::table& net, const toml::node& family) const;
+  network::Topology from_file(const toml::node& path) const;
+  void workload(Scene& scene) const;
+  workloads::ParamValue param(const workloads::ParamSpec& spec, const toml::node& value,
+                              const network::Topology& topology) const;
+
+  const toml::table& root_;
+  std::string file_;
+};
+
+void SceneReader::check_keys(const toml::table& t, const std::vector<std::string>& valid,
+                             const std::string& where) const {
+  for (auto&& [key, value] : t) {
+    bool known = false;
+    for (const std::string& name : valid) known = known || key.str() == name;
+    if (!known)
+      throw ConfigError(pos_of(key.source(), file_), "unknown key '" + std::string(key.str()) +
+                                                         "' in " + where + "; valid keys are " +
+                                                         join(valid));
+  }
+}
+
+const toml::table& SceneReader::table(const toml::node& node, const std::string& key) const {
+  if (!node.is_table()) fail(node, "'" + key + "': expected a table, got " + type_name(node));
+  return *node.as_table();
+}
+
+std::string SceneReader::text(const toml::node& node, const std::string& key) const {
+  if (!node.is_string()) fail(node, "'" + key + "': expected a string, got " + type_name(node));
+  return *node.value<std::string>();
+}
+
+std::string SceneReader::text_or(const toml::table& t, const std::string& key,
+                                 std::string fallback) const {
+  const toml::node* node = t.get(key);
+  return node ? text(*node, key) : fallback;
+}
+
+t800::LinkConfig SceneReader::link_config(const toml::table& net) const {
+  t800::LinkConfig link;
+  if (const toml::node* speed = net.get("link_speed_mbps")) {
+    if (!speed->is_number())
+      fail(*speed, "'network.link_speed_mbps': expected a number, got " + type_name(*speed));
+    link.speed_mbps = number(*speed);
+    if (!t800::is_valid_link_speed(link.speed_mbps))
+      fail(*speed, "link speed " + number_text(link.speed_mbps) +
+                       " Mbit/s is not supported: a T800 link runs at 5, 10 or 20 Mbit/s");
+  }
+  if (const toml::node* protocol = net.get("link_protocol")) {
+    const std::string name = text(*protocol, "network.link_protocol");
+    auto parsed = t800::parse_link_protocol(name);
+    if (!parsed)
+      fail(*protocol, "unknown link protocol '" + name + "'; valid protocols are overlapped, t414");
+    link.protocol = *parsed;
+  }
+  return link;
+}
+
+network::Topology SceneReader::topology(const toml::table* net) const {
+  static const toml::table empty;
+  const toml::table& n = net ? *net : empty;
+  // Exactly one source of processors; naming the ones found makes a clash easy to fix.
+  std::vector<std::pair<std::string, const toml::node*>> given;
+  for (const char* key : {"topology", "family"})
+    if (const toml::node* node = n.get(key))
+      given.emplace_back("network." + std::string(key), node);
+  if (const toml::node* inline_table = root_.get("topology"))
+    given.emplace_back("[topology]", inline_table);
+  if (given.empty())
+    fail(net ? static_cast<const toml::node&>(*net) : root_,
+         "no network given: set network.topology = \"../topologies/pair.toml\", or "
+         "network.family = \"tree\" with network.workers = 3, or an inline [topology] table");
+  if (given.size() > 1)
+    fail(*given[1].second,
+         "give only one of network.topology, network.family and [topology]; "
+         "this scene has both " +
+             given[0].first + " and " + given[1].first);
+  const bool family = given[0].first == "network.family";
+  for (const char* key : {"workers", "processor"})
+    if (const toml::node* node = n.get(key); node && !family)
+      fail(*node, "network." + std::string(key) +
+                      " applies only to a generated network (network.family); a topology file "
+                      "sets each [[processor]] itself");
+  if (family) return generated(n, *given[0].second);
+  if (given[0].first == "network.topology") return from_file(*given[0].second);
+  const toml::node& inline_table = *given[0].second;
+  if (!inline_table.is_table())
+    fail(inline_table, "'topology': expected a table, got " + type_name(inline_table) +
+                           "; to name a topology file, use network.topology");
+  return network::parse_topology(*inline_table.as_table(), file_);
+}
+
+network::Topology SceneReader::generated(const toml::table& net, const toml::node& family) const {
+  const std::string name = text(family, "network.family");
+  auto parsed = network::parse_family(name);
+  if (!parsed)
+    fail(family, "unknown network family '" + name + "'; valid families are " +
+                     join(network::family_names()));
+  const toml::node* workers = net.get("workers");
+  if (!workers)
+    fail(family, "network.family = \"" + name +
+                     "\" needs network.workers, the number of workers besides P0 (e.g. 3)");
+  if (!workers->is_integer())
+    fail(*workers, "'network.workers': expected an integer, got " + type_name(*workers));
+  const std::int64_t count = *workers->value<std::int64_t>();
+  if (count < INT_MIN || count > INT_MAX)
+    fail(*workers, "network.workers = " + std::to_string(count) + " is out of range");
+  t800::ProcessorConfig config;
+  if (const toml::node* type = net.get("processor")) {
+    const std::string grade = text(*type, "network.processor");
+    auto parsed_grade = t800::parse_speed_grade(grade);
+    if (!parsed_grade)
+      fail(*type,
+           "unknown processor type '" + grade + "'; valid types are T800-20, T800-25, T800-30");
+    config.grade = *parsed_grade;
+  }
+  return network::generate(*parsed, static_cast<int>(count), config, pos(*workers));
+}
+
+// Relative paths are relative to the scene file, so scenes can be run from any directory.
+network::Topology SceneReader::from_file(const toml::node& path) const {
+  const std::string name = text(path, "network.topology");
+  fs::path resolved(name);
+  if (resolved.is_relative()) resolved = fs::path(file_).parent_path() / resolved;
+  std::error_code ec;
+  if (name.empty() || !fs::is_regular_file(resolved, ec))
+    fail(path, "topology file '" + name + "' not found (looked for " + resolved.string() + ")");
+  return network::load_topology(resolved.string());
+}
+
+workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const toml::node& value,
+                                         const network::Topology& topology) const {
+  using workloads::ParamType;
+  const std::string key = "workload." + spec.name;
+  auto wrong_type = [&](const toml::node& node) {
+    const std::string type = workloads::to_string(spec.type);
+    fail(node, "'" + key + "': expected " + article(type) + type + ", got " + type_name(node));
+  };
+  auto check_range = [&](double x) {
+    if ((spec.min && x < *spec.min) || (spec.max && x > *spec.max))
+      fail(value, key + " = " + number_text(x) + " is outside the valid range " +
+                      (spec.min ? number_text(*spec.min) : "-inf") + " to " +
+                      (spec.max ? number_text(*spec.max) : "inf"));
+  };
+  switch (spec.type) {
+    case ParamType::flag:
+      if (!value.is_boolean()) wrong_type(value);
+      return *value.value<bool>();
+    case ParamType::integer: {
+      if (!value.is_integer()) wrong_type(value);
+      const std::int64_t n = *value.value<std::int64_t>();
+      check_range(static_cast<double>(n));
+      return n;
+    }
+    case ParamType::real: {
+      if (!value.is_number()) wrong_type(value);  // an integer is a fine real
+      const double x = number(value);
+      if (std::isnan(x)) fail(value, key + " is nan: give a number");
+      check_range(x);
+      return x;
+    }
+    case ParamType::text: {
+      if (!value.is_string()) wrong_type(value);
+      const std::string s = *value.value<std::string>();
+      if (!spec.choices.empty()) {
+        bool ok = false;
+        for (const std::string& c : spec.choices) ok = ok || c == s;
+        if (!ok)
+          fail(value, key + " = \"" + s + "\" is not valid; choose one of " + join(spec.choices));
+      }
+      // Processor-naming parameters must name a processor of this scene's network.
+      if ((spec.name == "from" || spec.name == "to") && !s.empty() && topology.find(s) < 0) {
+        std::vector<std::string> names;
+        for (const network::ProcessorSpec& p : topology.processors) names.push_back(p.name);
+        fail(value, key + " = \"" + s + "\": there is no processor '" + s +
+                        "' in the topology; processors are " + join(names));
+      }
+      return s;
+    }
+    case ParamType::real_list: {
+      if (!value.is_array()) wrong_type(value);
+      std::vector<double> list;
+      for (const toml::node& element : *value.as_array()) {
+        if (!element.is_number())
+          fail(element, "'" + key + "': expected an array of numbers, got an element of type " +
+                            type_name(element));
+        list.push_back(number(element));
+        if (std::isnan(list.back())) fail(element, key + " contains nan: give numbers");
+        check_range(list.back());
+      }
+      return list;
+    }
+  }
+  return {};
+}
+
+void SceneReader::workload(Scene& scene) const {
+  std::vector<std::string> kinds;
+  for (const workloads::WorkloadInfo& w : workloads::workload_catalog()) kinds.push_back(w.kind);
+  const toml::node* node = root_.get("workload");
+  if (!node) fail(root_, "no [workload] table: add one with kind = one of " + join(kinds));
+  const toml::table& t = table(*node, "workload");
+  const toml::node* kind = t.get("kind");
+  if (!kind) fail(t, "[workload] has no kind: set kind = one of " + join(kinds));
+  scene.workload_kind = text(*kind, "workload.kind");
+  const workloads::WorkloadInfo* info = workloads::find_workload(scene.workload_kind);
+  if (!info)
+    fail(*kind,
+         "unknown workload kind '" + scene.workload_kind + "'; valid kinds are " + join(kinds));
+  std::vector<std::string> valid{"kind"};
+  for (const workloads::ParamSpec& p : info->params) valid.push_back(p.name);
+  check_keys(t, valid, "[workload] of kind " + info->kind);
+  for (const workloads::ParamSpec& spec : info->params) {
+    const toml::node* value = t.get(spec.name);
+    scene.workload.set(spec.name, value ? param(spec, *value, scene.topology) : spec.default_value);
+  }
+}
+
+Scene SceneReader::read() {
+  check_keys(root_, {"name", "description", "network", "topology", "workload"}, "a scene");
+  Scene scene;
+  scene.file = file_;
+  scene.name = text_or(root_, "name", fs::path(file_).stem().string());
+  scene.description = text_or(root_, "description", "");
+  const toml::table* net = nullptr;
+  if (const toml::node* node = root_.get("network")) net = &table(*node, "network");
+  if (net)
+    check_keys(*net,
+               {"topology", "family", "workers", "link_speed_mbps", "link_protocol", "processor"},
+               "[network]");
+  if (net) scene.link = link_config(*net);
+  scene.topology = topology(net);
+  workload(scene);
+  return scene;
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  toml::table root = parse_file(path, "scene file");
+  for (const std::string& text : overrides) apply_override(root, text);
+  return SceneReader(root, path).read();
+}
+
+std::string check_file(const std::string& path) {
+  const toml::table root = parse_file(path, "file");
+  if (root.contains("workload")) {
+    const Scene scene = load_scene(path);
+    return "scene " + scene.name + ": " + plural(scene.topology.processors.size(), "processor") +
+           ", " + plural(scene.topology.connections.size(), "link") + ", workload " +
+           scene.workload_kind;
+  }
+  const network::Topology t = network::load_topology(path);
+  const network::LinkEnd host = *t.host;
+  return "topology " + t.name + ": " + plural(t.processors.size(), "processor") + ", " +
+         plural(t.connections.size(), "link") + ", host " +
+         t.processors[static_cast<std::size_t>(host.processor)].name + ".link" +
+         std::to_string(host.link);
+}
+
+}  // namespace tools
