@@ -6,6 +6,7 @@
 #include "network/config_error.hpp"
 #include "tools/commands.hpp"
 #include "tools/report_format.hpp"
+#include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 #include "workloads/run/run.hpp"
 
@@ -18,16 +19,6 @@ struct RunArgs {
   std::vector<std::string> overrides;
   bool json = false;
 };
-
-workloads::RunInputs inputs_from(const Scene& scene) {
-  workloads::RunInputs in;
-  in.name = scene.name;
-  in.topology = scene.topology;
-  in.options.link = scene.link;
-  in.kind = scene.workload_kind;
-  in.params = scene.workload;
-  return in;
-}
 
 int run_scene(const RunArgs& args) {
   const Scene scene = load_scene(args.scene, args.overrides);

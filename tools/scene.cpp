@@ -206,6 +206,7 @@ class SceneReader {
   network::Topology generated(const toml::table& net, const toml::node& family) const;
   network::Topology from_file(const toml::node& path) const;
   void workload(Scene& scene) const;
+  void calibration(Scene& scene) const;
   workloads::ParamValue param(const workloads::ParamSpec& spec, const toml::node& value,
                               const network::Topology& topology) const;
 
@@ -421,8 +422,29 @@ void SceneReader::workload(Scene& scene) const {
   }
 }
 
+// [calibration] holds the one constant the paper's data may fit, and says how it was fitted: a fitted number
+// without its provenance is not accepted.
+void SceneReader::calibration(Scene& scene) const {
+  const toml::node* node = root_.get("calibration");
+  if (!node) return;
+  const toml::table& t = table(*node, "calibration");
+  check_keys(t, {"code_efficiency", "fitted"}, "[calibration]");
+  const toml::node* factor = t.get("code_efficiency");
+  if (!factor) fail(t, "[calibration] has no code_efficiency: set code_efficiency = 1.0 (no calibration)");
+  if (!factor->is_number())
+    fail(*factor, "'calibration.code_efficiency': expected a number, got " + type_name(*factor));
+  scene.code_efficiency = number(*factor);
+  if (!(scene.code_efficiency >= 0.1 && scene.code_efficiency <= 100))
+    fail(*factor, "code_efficiency " + number_text(scene.code_efficiency) +
+                      " is outside 0.1 .. 100 (cycles of compiled occam per ideal instruction cycle)");
+  const toml::node* fitted = t.get("fitted");
+  if (!fitted && scene.code_efficiency != 1.0)
+    fail(t, "[calibration] sets code_efficiency but not `fitted`: say how and on what data it was fitted");
+  if (fitted) scene.calibration_note = text(*fitted, "calibration.fitted");
+}
+
 Scene SceneReader::read() {
-  check_keys(root_, {"name", "description", "network", "topology", "workload"}, "a scene");
+  check_keys(root_, {"name", "description", "network", "topology", "workload", "calibration"}, "a scene");
   Scene scene;
   scene.file = file_;
   scene.name = text_or(root_, "name", fs::path(file_).stem().string());
@@ -436,6 +458,7 @@ Scene SceneReader::read() {
   if (net) scene.link = link_config(*net);
   scene.topology = topology(net);
   workload(scene);
+  calibration(scene);
   return scene;
 }
 

@@ -19,6 +19,9 @@ struct Scene {
   t800::LinkConfig link;  // network.link_speed_mbps, network.link_protocol: defaults for every link
   std::string workload_kind;
   workloads::Params workload;  // validated against the workload's declared parameters
+  // [calibration]: the occam code-efficiency factor (t800::CostModel) and how it was fitted. 1 = uncalibrated.
+  double code_efficiency = 1.0;
+  std::string calibration_note;
 };
 
 // Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the value is
