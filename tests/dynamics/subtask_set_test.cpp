@@ -1,0 +1,94 @@
+// The derived subtask sets: 17 D + 61 C + 4 h (full) and 17 D + 43 C + 4 h (paper), and the kept
+// Coriolis list equal to stanford-arm.md's (typed in here as the independent reference; the code
+// derives it).
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "dynamics_fixtures.hpp"
+
+namespace dynamics {
+namespace {
+
+using testing::stanford;
+
+std::map<TermKind, int> count_by_kind(const std::vector<Subtask>& subtasks) {
+  std::map<TermKind, int> count;
+  for (const Subtask& s : subtasks) ++count[s.kind];
+  return count;
+}
+
+std::set<std::string> names(const std::vector<Subtask>& subtasks, TermKind kind) {
+  std::set<std::string> result;
+  for (const Subtask& s : subtasks) {
+    if (s.kind == kind) result.insert(s.name);
+  }
+  return result;
+}
+
+TEST(SubtaskSets, FullModelHas82Terms) {
+  const auto subtasks = derive_subtasks(stanford(), ModelVariant::full);
+  const auto count = count_by_kind(subtasks);
+  EXPECT_EQ(count.at(TermKind::inertia), 17);
+  EXPECT_EQ(count.at(TermKind::coriolis), 61);
+  EXPECT_EQ(count.at(TermKind::gravity), 4);
+  EXPECT_EQ(subtasks.size(), 82u);
+}
+
+TEST(SubtaskSets, PaperModelHas64Terms) {
+  const auto subtasks = derive_subtasks(stanford(), ModelVariant::paper);
+  const auto count = count_by_kind(subtasks);
+  EXPECT_EQ(count.at(TermKind::inertia), 17);
+  EXPECT_EQ(count.at(TermKind::coriolis), 43);
+  EXPECT_EQ(count.at(TermKind::gravity), 4);
+  EXPECT_EQ(subtasks.size(), 64u);
+}
+
+TEST(SubtaskSets, ZeroInertiaAndGravityTermsAreTheDocumentedOnes) {
+  const auto subtasks = derive_subtasks(stanford(), ModelVariant::full);
+  std::set<std::string> zero_d;
+  for (const Subtask& t : all_terms()) {
+    if (t.kind == TermKind::inertia && !names(subtasks, TermKind::inertia).count(t.name)) {
+      zero_d.insert(t.name);
+    }
+  }
+  EXPECT_EQ(zero_d, (std::set<std::string>{"D34", "D36", "D45", "D56"}));
+  EXPECT_EQ(names(subtasks, TermKind::gravity), (std::set<std::string>{"h2", "h3", "h4", "h5"}));
+}
+
+TEST(SubtaskSets, PaperCoriolisListMatchesStanfordArmReference) {
+  // stanford-arm.md, "The kept C terms, listed as i: jk".
+  const std::map<int, std::string> listed = {{1, "12 13 14 15 22 23 24 25 44 45 55"},
+                                             {2, "11 14 15 23 24 25 44 45 55"},
+                                             {3, "11 14 15 22 24 25 55"},
+                                             {4, "11 12 13 15 22 23 25 45"},
+                                             {5, "11 12 13 14 22 23 24 44"},
+                                             {6, ""}};
+  std::set<std::string> expected;
+  for (const auto& [i, pairs] : listed) {
+    std::istringstream in(pairs);
+    std::string jk;
+    while (in >> jk) expected.insert("C" + std::to_string(i) + "_" + jk);
+  }
+  ASSERT_EQ(expected.size(), 43u);
+  EXPECT_EQ(names(derive_subtasks(stanford(), ModelVariant::paper), TermKind::coriolis), expected);
+}
+
+TEST(SubtaskSets, DroppedTermsAllInvolveJointSixAndAreSmall) {
+  const RobotModel& model = stanford();
+  const auto full = names(derive_subtasks(model, ModelVariant::full), TermKind::coriolis);
+  const auto paper = names(derive_subtasks(model, ModelVariant::paper), TermKind::coriolis);
+  int dropped = 0;
+  for (const TermMagnitude& m : analyse_terms(model, all_terms())) {
+    if (!full.count(m.term.name) || paper.count(m.term.name)) continue;
+    ++dropped;
+    EXPECT_TRUE(m.term.i == 5 || m.term.j == 5 || m.term.k == 5) << m.term.name;
+    EXPECT_LE(m.max_abs, 1.5e-4) << m.term.name;
+  }
+  EXPECT_EQ(dropped, 18);
+}
+
+}  // namespace
+}  // namespace dynamics

@@ -1,0 +1,32 @@
+#include "workloads/dynamics/assembly.hpp"
+
+namespace dynamics {
+
+OpCounts count_assembly_ops(const std::vector<Subtask>& subtasks) {
+  const std::vector<Counted<double>> values(subtasks.size(), Counted<double>(0.5));
+  std::array<Counted<double>, kJoints> qd;
+  qd.fill(Counted<double>(0.25));
+  OpTally tally;
+  coriolis_vector(subtasks, values, qd);
+  return tally.counts();
+}
+
+Dynamics evaluate_all(const RobotModel& model, const std::vector<Subtask>& subtasks,
+                      const JointVector& q, const JointVector& qd) {
+  Dynamics data;
+  evaluate_all(model, data, subtasks, q, qd);
+  return data;
+}
+
+JointVector forward_dynamics(const RobotModel& model, const std::vector<Subtask>& subtasks,
+                             const JointVector& q, const JointVector& qd, const JointVector& tau) {
+  Dynamics data;
+  return forward_dynamics(model, data, subtasks, q, qd, tau);
+}
+
+JointVector forward_dynamics(const RobotModel& model, ModelVariant variant, const JointVector& q,
+                             const JointVector& qd, const JointVector& tau) {
+  return forward_dynamics(model, derive_subtasks(model, variant), q, qd, tau);
+}
+
+}  // namespace dynamics
