@@ -4,4 +4,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
-./build/t800sim run configs/scenes/link-stream.toml
+./build/t800sim paper

@@ -38,6 +38,10 @@ void ProcessorActivity::settle(double t) {
   since_us_ = t;
 }
 
+double ProcessorActivity::busy_us_now() const {
+  return busy_us() + (current_ != ProcessorState::idle ? now_us() - since_us_ : 0.0);
+}
+
 void ProcessorActivity::set_cpu(ProcessorState cpu, const std::string& label) {
   cpu_ = cpu;
   label_ = label;

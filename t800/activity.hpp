@@ -31,6 +31,8 @@ class ProcessorActivity {
   double compute_us() const { return total_us_[int(ProcessorState::compute)]; }
   double communicate_us() const { return total_us_[int(ProcessorState::communicate)]; }
   double busy_us() const { return compute_us() + communicate_us(); }
+  // Busy time so far, counting the state it is in up to the present simulated time (for windowed measures).
+  double busy_us_now() const;
   // When it first and last left the idle state (the span of its work), in microseconds.
   double first_busy_us() const { return first_busy_us_; }
   double last_busy_us() const { return last_busy_us_; }

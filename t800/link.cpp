@@ -1,7 +1,7 @@
 #include "t800/link.hpp"
 
 
-#include "t800/timing_table.hpp"
+#include "t800/link_timing.hpp"
 
 namespace t800 {
 
@@ -12,13 +12,12 @@ using sc_core::SC_ZERO_TIME;
 Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, ProcessorActivity* end0,
            ProcessorActivity* end1)
     : sc_module(name), config_(config), end_{end0, end1} {
-  bit_ = sc_time(1000.0 / config.speed_mbps, SC_NS);
-  data_packet_ = bit_ * double(timing::kDataPacketBits);
-  ack_packet_ = bit_ * double(timing::kAckPacketBits);
-  detect_delay_ = sc_time(timing::kAckDetectNs, SC_NS);
-  // T414: the acknowledge waits for the whole packet.
-  if (config.protocol == LinkProtocol::t414) detect_delay_ += data_packet_;
-  process_delay_ = bit_ * timing::kAckProcessBits + sc_time(timing::kAckProcessNs, SC_NS);
+  const LinkTiming t(config);
+  bit_ = sc_time(t.bit_ns, SC_NS);
+  data_packet_ = sc_time(t.data_packet_ns, SC_NS);
+  ack_packet_ = sc_time(t.ack_packet_ns, SC_NS);
+  detect_delay_ = sc_time(t.ack_detect_ns, SC_NS);
+  process_delay_ = sc_time(t.ack_process_ns, SC_NS);
 
   for (int d = 0; d < 2; ++d) {
     sc_core::sc_spawn([this, d] { wire_thread(d); }, sc_core::sc_gen_unique_name("wire"));

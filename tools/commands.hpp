@@ -7,6 +7,7 @@ namespace tools {
 
 void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
+void add_paper_command(CLI::App& app);  // also `calibrate`
 
 // Exit codes shared by the commands.
 constexpr int kExitOk = 0;

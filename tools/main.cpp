@@ -14,6 +14,7 @@ int sc_main(int argc, char* argv[]) {
   app.require_subcommand(1);
   tools::add_run_command(app);
   tools::add_check_command(app);
+  tools::add_paper_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -113,12 +113,12 @@ class LinkStream : public Workload {
 
 }  // namespace
 
-std::unique_ptr<Workload> make_pingpong(const Params& params, const network::Topology& topology) {
-  return std::make_unique<PingPong>(params, topology);
+std::unique_ptr<Workload> make_pingpong(const WorkloadContext& c) {
+  return std::make_unique<PingPong>(c.params, c.topology);
 }
 
-std::unique_ptr<Workload> make_link_stream(const Params& params, const network::Topology& topology) {
-  return std::make_unique<LinkStream>(params, topology);
+std::unique_ptr<Workload> make_link_stream(const WorkloadContext& c) {
+  return std::make_unique<LinkStream>(c.params, c.topology);
 }
 
 }  // namespace workloads

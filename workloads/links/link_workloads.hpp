@@ -7,7 +7,7 @@
 
 namespace workloads {
 
-std::unique_ptr<Workload> make_pingpong(const Params& params, const network::Topology& topology);
-std::unique_ptr<Workload> make_link_stream(const Params& params, const network::Topology& topology);
+std::unique_ptr<Workload> make_pingpong(const WorkloadContext& context);
+std::unique_ptr<Workload> make_link_stream(const WorkloadContext& context);
 
 }  // namespace workloads

@@ -46,7 +46,8 @@ std::vector<LinkReport> link_reports(const network::Machine& m, double total_us)
 RunReport run(const RunInputs& in) {
   const auto start = std::chrono::steady_clock::now();
   network::Machine machine(in.topology, in.options);
-  std::unique_ptr<Workload> workload = make_workload(in.kind, in.params, in.topology);
+  std::unique_ptr<Workload> workload =
+      make_workload(in.kind, WorkloadContext{in.params, in.topology, in.robot.get()});
   workload->build(machine);
   RunReport report;
   report.name = in.name;

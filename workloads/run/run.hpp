@@ -1,10 +1,12 @@
 // One simulation from plain inputs to a report: elaborate the machine, build the workload, run, account.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "network/machine.hpp"
+#include "workloads/dynamics/robot_model.hpp"
 #include "workloads/params.hpp"
 #include "workloads/run/result_value.hpp"
 
@@ -16,6 +18,7 @@ struct RunInputs {
   network::MachineOptions options;
   std::string kind;
   Params params;
+  std::shared_ptr<const dynamics::RobotModel> robot;  // for workloads with a `robot` parameter
 };
 
 struct ProcessorReport {

@@ -1,0 +1,102 @@
+#include "tools/child_run.hpp"
+
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <climits>
+#include <stdexcept>
+
+namespace tools {
+
+std::string self_executable() {
+  std::array<char, PATH_MAX> buffer{};
+  const ssize_t n = readlink("/proc/self/exe", buffer.data(), buffer.size() - 1);
+  if (n <= 0) throw std::runtime_error("cannot find the t800sim executable (/proc/self/exe)");
+  return std::string(buffer.data(), std::size_t(n));
+}
+
+namespace {
+
+// Reads both pipes until both close, so a child writing much to one cannot block on the other.
+void drain(int out_fd, int err_fd, ChildOutput& result) {
+  pollfd fds[2] = {{out_fd, POLLIN, 0}, {err_fd, POLLIN, 0}};
+  std::string* sinks[2] = {&result.out, &result.err};
+  int open = 2;
+  std::array<char, 65536> buffer;
+  while (open > 0) {
+    if (poll(fds, 2, -1) < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    for (int i = 0; i < 2; ++i) {
+      if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      const ssize_t n = read(fds[i].fd, buffer.data(), buffer.size());
+      if (n > 0) {
+        sinks[i]->append(buffer.data(), std::size_t(n));
+      } else {
+        close(fds[i].fd);
+        fds[i].fd = -1;
+        --open;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+ChildOutput run_self(const std::vector<std::string>& args) {
+  ChildOutput result;
+  const std::string exe = self_executable();
+  int out_pipe[2], err_pipe[2];
+  if (pipe(out_pipe) != 0 || pipe(err_pipe) != 0) throw std::runtime_error("cannot create pipes");
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("cannot start a child process");
+  if (pid == 0) {
+    dup2(out_pipe[1], STDOUT_FILENO);
+    dup2(err_pipe[1], STDERR_FILENO);
+    close(out_pipe[0]);
+    close(err_pipe[0]);
+    close(out_pipe[1]);
+    close(err_pipe[1]);
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(exe.c_str()));
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+    execv(exe.c_str(), argv.data());
+    _exit(127);
+  }
+  close(out_pipe[1]);
+  close(err_pipe[1]);
+  drain(out_pipe[0], err_pipe[0], result);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+nlohmann::json run_scene_child(const std::string& scene, const std::vector<std::string>& overrides) {
+  std::vector<std::string> args{"run", scene, "--json"};
+  for (const std::string& o : overrides) {
+    args.push_back("--set");
+    args.push_back(o);
+  }
+  const ChildOutput child = run_self(args);
+  if (child.exit_code != 0) {
+    std::string message = child.err.empty() ? child.out : child.err;
+    while (!message.empty() && message.back() == '\n') message.pop_back();
+    if (message.empty()) message = "the simulation exited with code " + std::to_string(child.exit_code);
+    throw std::runtime_error(message);
+  }
+  try {
+    return nlohmann::json::parse(child.out);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(std::string("unreadable report from the simulation: ") + e.what());
+  }
+}
+
+}  // namespace tools

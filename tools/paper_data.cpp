@@ -1,0 +1,79 @@
+#include "tools/paper_data.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include <toml++/toml.h>
+
+#include "network/config_error.hpp"
+
+namespace tools {
+
+namespace {
+
+using network::ConfigError;
+
+const toml::table& section(const toml::table& root, const std::string& name, const std::string& file) {
+  const toml::table* t = root[name].as_table();
+  if (!t) throw ConfigError({file, 0, 0}, "no [" + name + "] table");
+  return *t;
+}
+
+template <class T>
+std::vector<T> numbers(const toml::table& t, const std::string& key, const std::string& file) {
+  const toml::array* a = t[key].as_array();
+  if (!a) throw ConfigError({file, 0, 0}, "'" + key + "' should be an array of numbers");
+  std::vector<T> out;
+  for (const toml::node& n : *a) {
+    auto v = n.value<double>();
+    if (!v) throw ConfigError({file, int(n.source().begin.line), int(n.source().begin.column)}, "not a number");
+    out.push_back(T(*v));
+  }
+  return out;
+}
+
+}  // namespace
+
+PaperTables load_paper_tables(const std::string& path) {
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw ConfigError({path, int(e.source().begin.line), int(e.source().begin.column)},
+                      std::string(e.description()));
+  }
+  PaperTables p;
+  const toml::table& t4 = section(root, "table4", path);
+  p.table4_workers = numbers<int>(t4, "workers", path);
+  p.table4_tp_ms = numbers<double>(t4, "tp_ms", path);
+  p.text_workers = t4["text_tp_ms"]["workers"].value_or(0);
+  p.text_tp_ms = t4["text_tp_ms"]["tp_ms"].value_or(0.0);
+  const toml::table& t5 = section(root, "table5", path);
+  p.table5_workers = numbers<int>(t5, "workers", path);
+  const toml::array* rows = t5["utilisation_pct"].as_array();
+  if (!rows) throw ConfigError({path, 0, 0}, "[table5] needs utilisation_pct");
+  for (const toml::node& row : *rows) {
+    std::vector<double> r;
+    if (const toml::array* a = row.as_array())
+      for (const toml::node& n : *a) r.push_back(n.value_or(0.0));
+    p.table5_utilisation_pct.push_back(r);
+  }
+  const toml::table& t6 = section(root, "table6", path);
+  p.table6_m = numbers<int>(t6, "m", path);
+  p.table6_tp_ms = numbers<double>(t6, "tp_ms", path);
+  if (p.table4_workers.size() != p.table4_tp_ms.size() || p.table6_m.size() != p.table6_tp_ms.size() ||
+      p.table5_workers.size() != p.table5_utilisation_pct.size())
+    throw ConfigError({path, 0, 0}, "a table's columns have different lengths");
+  return p;
+}
+
+std::string find_repository_file(const std::string& relative) {
+  namespace fs = std::filesystem;
+  if (fs::exists(relative)) return relative;
+  const fs::path built = fs::path(T800SIM_SOURCE_DIR) / relative;
+  if (fs::exists(built)) return built.string();
+  throw std::runtime_error("cannot find " + relative + " in the working directory or in " +
+                           std::string(T800SIM_SOURCE_DIR) + "; run from the repository root");
+}
+
+}  // namespace tools
