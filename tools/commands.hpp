@@ -8,6 +8,7 @@ namespace tools {
 void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_paper_command(CLI::App& app);  // also `calibrate`
+void add_dynamics_command(CLI::App& app);
 
 // Exit codes shared by the commands.
 constexpr int kExitOk = 0;

@@ -15,6 +15,7 @@ int sc_main(int argc, char* argv[]) {
   tools::add_run_command(app);
   tools::add_check_command(app);
   tools::add_paper_command(app);
+  tools::add_dynamics_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
