@@ -114,10 +114,12 @@ void Link::send_ack_packet(int w) {
 
 void Link::on_detect(int di) {
   Direction& d = dir_[di];
-  if (d.armed)
+  if (d.armed || d.accepted_before_detect) {
+    d.accepted_before_detect = false;
     queue_ack(di);
-  else
+  } else {
     d.ack_owed = true;  // flow control: no input waiting, so no acknowledge yet
+  }
 }
 
 void Link::queue_ack(int di) {
@@ -134,6 +136,9 @@ void Link::on_ack_processed(int di) {
 void Link::on_byte_arrived(int di) {
   Direction& d = dir_[di];
   ++d.received;
+  // A T414 acknowledges after the whole packet: a byte taken by a waiting input is owed its acknowledge even
+  // if that input completes (and disarms) before the acknowledge goes out.
+  if (d.armed && config_.protocol == LinkProtocol::t414) d.accepted_before_detect = true;
   if (d.armed && d.received == d.incoming.bytes) complete_receive(di);
 }
 

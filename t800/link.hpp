@@ -49,6 +49,7 @@ class Link : public sc_core::sc_module {
     // receiving DMA
     bool armed = false;
     bool ack_owed = false;
+    bool accepted_before_detect = false;
     bool receiving = false;
     bool receiver_counted = false;
     Message incoming;

@@ -38,3 +38,10 @@ TEST(LinkRate, T414StyleIsAboutPointEightMBps) {
   RecordProperty("kBps", std::to_string(r.forward_kBps));
   EXPECT_NEAR(r.forward_kBps, 800, 0.15 * 800);
 }
+
+// Message boundaries with late (T414) acknowledges: many short messages, each must complete.
+TEST(LinkRate, T414ManyShortMessagesComplete) {
+  const auto r = stream(20, true, LinkProtocol::t414, 3, 200);
+  EXPECT_GT(r.forward_kBps, 0);
+  EXPECT_NEAR(r.forward_kBps, r.backward_kBps, 0.02 * r.forward_kBps);
+}
