@@ -2,6 +2,8 @@
 
 #include <toml++/toml.h>
 
+#include "network/toml_util.hpp"
+
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -11,60 +13,6 @@
 namespace network {
 
 namespace {
-
-// Where a node is. A node that came from somewhere other than `file` (a --set override parsed on
-// its own) keeps its origin's name but not its line numbers, which would mean nothing in `file`.
-SourcePos pos_of(const toml::source_region& source, const std::string& file) {
-  if (source.path && *source.path != file) return {*source.path, 0, 0};
-  if (source.begin.line == 0) return {file, 0, 0};
-  return {file, static_cast<int>(source.begin.line), static_cast<int>(source.begin.column)};
-}
-
-std::string type_name(const toml::node& node) {
-  switch (node.type()) {
-    case toml::node_type::string:
-      return "string";
-    case toml::node_type::integer:
-      return "integer";
-    case toml::node_type::floating_point:
-      return "floating-point number";
-    case toml::node_type::boolean:
-      return "boolean";
-    case toml::node_type::table:
-      return "table";
-    case toml::node_type::array:
-      return "array";
-    case toml::node_type::date:
-      return "date";
-    case toml::node_type::time:
-      return "time";
-    case toml::node_type::date_time:
-      return "date-time";
-    case toml::node_type::none:
-      break;
-  }
-  return "nothing";
-}
-
-std::string join(const std::vector<std::string>& items) {
-  std::string text;
-  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
-}
-
-// toml++'s value<double>() gives nothing for integers beyond 2^53; convert them ourselves.
-double number(const toml::node& node) {
-  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
-  return node.as_floating_point()->get();
-}
-
-std::string number_text(double value) {
-  if (std::abs(value) < 1e15 && value == std::floor(value))
-    return std::to_string(static_cast<long long>(value));
-  std::string text = std::to_string(value);
-  while (text.back() == '0') text.pop_back();
-  return text;
-}
 
 // Reads one topology table; every error carries the position of the node it is about.
 class Reader {
@@ -268,17 +216,7 @@ Topology parse_topology(const toml::table& table, const std::string& file) {
 }
 
 Topology load_topology(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::is_directory(path, ec))
-    throw ConfigError({path, 0, 0}, "this is a directory, not a topology file");
-  if (!fs::exists(path, ec)) throw ConfigError({path, 0, 0}, "no such topology file");
-  try {
-    const toml::table root = toml::parse_file(path);
-    return parse_topology(root, path);
-  } catch (const toml::parse_error& e) {
-    throw ConfigError(pos_of(e.source(), path), std::string(e.description()));
-  }
+  return parse_topology(parse_toml_file(path, "topology file"), path);
 }
 
 }  // namespace network

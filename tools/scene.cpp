@@ -9,6 +9,7 @@
 #include <initializer_list>
 
 #include "network/families.hpp"
+#include "network/toml_util.hpp"
 #include "network/topology_file.hpp"
 
 namespace tools {
@@ -18,87 +19,16 @@ namespace {
 namespace fs = std::filesystem;
 using network::ConfigError;
 using network::SourcePos;
-
-// Where a node is. Nodes from a --set override are parsed from a document named after the flag:
-// report the flag, without the meaningless line numbers of that one-line document.
-SourcePos pos_of(const toml::source_region& source, const std::string& file) {
-  if (source.path && *source.path != file) return {*source.path, 0, 0};
-  if (source.begin.line == 0) return {file, 0, 0};
-  return {file, static_cast<int>(source.begin.line), static_cast<int>(source.begin.column)};
-}
-
-std::string type_name(const toml::node& node) {
-  switch (node.type()) {
-    case toml::node_type::string:
-      return "string";
-    case toml::node_type::integer:
-      return "integer";
-    case toml::node_type::floating_point:
-      return "floating-point number";
-    case toml::node_type::boolean:
-      return "boolean";
-    case toml::node_type::table:
-      return "table";
-    case toml::node_type::array:
-      return "array";
-    case toml::node_type::date:
-      return "date";
-    case toml::node_type::time:
-      return "time";
-    case toml::node_type::date_time:
-      return "date-time";
-    case toml::node_type::none:
-      break;
-  }
-  return "nothing";
-}
-
-std::string join(const std::vector<std::string>& items) {
-  std::string text;
-  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
-}
-
-// toml++'s value<double>() gives nothing for integers beyond 2^53; convert them ourselves.
-double number(const toml::node& node) {
-  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
-  return node.as_floating_point()->get();
-}
+using network::join;
+using network::number;
+using network::number_text;
+using network::plural;
+using network::pos_of;
+using network::type_name;
 
 std::string article(const std::string& noun) {
   return std::string("aeiou").find(noun.front()) == std::string::npos ? "a " : "an ";
 }
-
-std::string number_text(double value) {
-  if (std::abs(value) < 1e15 && value == std::floor(value))
-    return std::to_string(static_cast<long long>(value));
-  std::string text = std::to_string(value);
-  while (text.back() == '0') text.pop_back();
-  return text;
-}
-
-std::string plural(std::size_t n, const char* word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-}
-
-// Missing files and directories get a plain message; toml++ would read a directory as empty.
-void check_readable(const std::string& path, const char* what) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec))
-    throw ConfigError({path, 0, 0}, std::string("this is a directory, not a ") + what);
-  if (!fs::exists(path, ec)) throw ConfigError({path, 0, 0}, std::string("no such ") + what);
-}
-
-toml::table parse_file(const std::string& path, const char* what) {
-  check_readable(path, what);
-  try {
-    return toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw ConfigError(pos_of(e.source(), path), std::string(e.description()));
-  }
-}
-
-// --set overrides ---------------------------------------------------------------------------------
 
 bool bare_key_part(const std::string& part) {
   if (part.empty()) return false;
@@ -465,13 +395,13 @@ Scene SceneReader::read() {
 }  // namespace
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  toml::table root = parse_file(path, "scene file");
+  toml::table root = network::parse_toml_file(path, "scene file");
   for (const std::string& text : overrides) apply_override(root, text);
   return SceneReader(root, path).read();
 }
 
 std::string check_file(const std::string& path) {
-  const toml::table root = parse_file(path, "file");
+  const toml::table root = network::parse_toml_file(path, "file");
   if (root.contains("workload")) {
     const Scene scene = load_scene(path);
     return "scene " + scene.name + ": " + plural(scene.topology.processors.size(), "processor") +
