@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 
 #include "network/config_error.hpp"
+#include "network/toml_util.hpp"
 
 namespace tools {
 
@@ -26,7 +27,7 @@ std::vector<T> numbers(const toml::table& t, const std::string& key, const std::
   std::vector<T> out;
   for (const toml::node& n : *a) {
     auto v = n.value<double>();
-    if (!v) throw ConfigError({file, int(n.source().begin.line), int(n.source().begin.column)}, "not a number");
+    if (!v) throw ConfigError(network::pos_of(n.source(), file), "expected a number, got " + network::type_name(n));
     out.push_back(T(*v));
   }
   return out;
@@ -35,13 +36,7 @@ std::vector<T> numbers(const toml::table& t, const std::string& key, const std::
 }  // namespace
 
 PaperTables load_paper_tables(const std::string& path) {
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw ConfigError({path, int(e.source().begin.line), int(e.source().begin.column)},
-                      std::string(e.description()));
-  }
+  const toml::table root = network::parse_toml_file(path, "paper data file");
   PaperTables p;
   const toml::table& t4 = section(root, "table4", path);
   p.table4_workers = numbers<int>(t4, "workers", path);
