@@ -70,16 +70,23 @@ void LinkActivity::packet(const sc_core::sc_time& start, const sc_core::sc_time&
   if (keep_intervals_) {
     const double s = start.to_seconds() * 1e6;
     // Adjacent packets merge into one interval so a streaming link is one slice, not thousands.
-    if (!intervals_.empty() && intervals_.back().end_us >= s - 1e-9)
+    if (!intervals_.empty() && intervals_.back().end_us >= s - 1e-9) {
       intervals_.back().end_us = s + d;
-    else
+      if (data && intervals_.back().label == "ack") intervals_.back().label = "data";
+    } else {
       intervals_.push_back({s, s + d, 1, data ? "data" : "ack"});
+    }
   }
 }
 
-void LinkActivity::message_done(std::int64_t bytes, const std::string&) {
+void LinkActivity::message_done(std::int64_t bytes, const std::string& label) {
   bytes_ += bytes;
   ++messages_;
+  if (!keep_intervals_) return;
+  // Only now is the message known: its data packets have all been sent once its last ack is in.
+  for (std::size_t i = unlabelled_; i < intervals_.size(); ++i)
+    if (intervals_[i].label == "data" && !label.empty()) intervals_[i].label = label;
+  unlabelled_ = intervals_.size();
 }
 
 }  // namespace t800

@@ -57,6 +57,7 @@ class ProcessorActivity {
 class LinkActivity {
  public:
   void packet(const sc_core::sc_time& start, const sc_core::sc_time& duration, bool data);
+  // Kept intervals with this message's data (since the previous message) take its label, for traces.
   void message_done(std::int64_t bytes, const std::string& label);
   void keep_intervals(bool keep) { keep_intervals_ = keep; }
 
@@ -70,6 +71,7 @@ class LinkActivity {
   double busy_us_ = 0;
   bool keep_intervals_ = false;
   std::vector<Interval> intervals_;
+  std::size_t unlabelled_ = 0;  // first interval not yet named after its message
 };
 
 }  // namespace t800

@@ -8,6 +8,7 @@
 #include "tools/report_format.hpp"
 #include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
+#include "tools/trace_files.hpp"
 #include "workloads/run/run.hpp"
 
 namespace tools {
@@ -18,12 +19,15 @@ struct RunArgs {
   std::string scene;
   std::vector<std::string> overrides;
   bool json = false;
+  TraceFiles traces;
 };
 
 int run_scene(const RunArgs& args) {
   const Scene scene = load_scene(args.scene, args.overrides);
-  const workloads::RunReport report = workloads::run(inputs_from(scene));
-  std::cout << (args.json ? format_json(report) : format_text(report));
+  check_trace_files(args.traces);
+  const workloads::RunReport report = workloads::run(inputs_from(scene, args.traces.any()));
+  std::cout << (args.json ? format_json(report) : format_text(report)) << std::flush;
+  write_traces(report, args.traces);  // also after a deadlock: the trace shows who waited for whom
   return report.blocked.empty() ? kExitOk : kExitFailure;
 }
 
@@ -37,6 +41,7 @@ void add_run_command(CLI::App& app) {
                   "override a scene key, e.g. --set workload.bytes=4000 --set network.link_speed_mbps=10")
       ->type_name("KEY=VALUE");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the text report");
+  add_trace_options(*cmd, args->traces);
   cmd->callback([args] {
     int code = kExitOk;
     try {

@@ -41,6 +41,19 @@ std::vector<LinkReport> link_reports(const network::Machine& m, double total_us)
   return out;
 }
 
+std::vector<TraceTrack> trace_tracks(const network::Machine& m, const RunReport& report) {
+  std::vector<TraceTrack> tracks;
+  for (int i = 0; i < m.processors(); ++i)
+    tracks.push_back({TraceTrack::Kind::processor, report.processors[std::size_t(i)].name,
+                      m.transputer(i).activity().intervals()});
+  std::size_t next = 0;  // link_reports lists both directions of every link, in this order
+  for (const auto& info : m.links())
+    for (int d = 0; d < 2; ++d)
+      tracks.push_back(
+          {TraceTrack::Kind::link, report.links[next++].name, info.link->activity(d).intervals()});
+  return tracks;
+}
+
 }  // namespace
 
 RunReport run(const RunInputs& in) {
@@ -56,6 +69,7 @@ RunReport run(const RunInputs& in) {
   report.events = sc_core::sc_delta_count();
   report.processors = processor_reports(machine, report.simulated_us);
   report.links = link_reports(machine, report.simulated_us);
+  if (in.options.keep_intervals) report.tracks = trace_tracks(machine, report);
   if (report.blocked.empty()) report.workload = workload->results(machine);
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

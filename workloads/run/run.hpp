@@ -32,6 +32,16 @@ struct LinkReport {
   double busy_us = 0, utilisation = 0;  // time its wire carries packets (its data, the reverse acknowledges)
 };
 
+// One timeline of a trace: a processor's non-idle intervals (state compute or communicate, label
+// the compute block's or empty) or a link direction's busy intervals (label the message's).
+// Interval.state is a t800::ProcessorState for processors, 1 for links.
+struct TraceTrack {
+  enum class Kind { processor, link };
+  Kind kind = Kind::processor;
+  std::string name;  // as in the report's processors and links
+  std::vector<t800::Interval> intervals;
+};
+
 struct RunReport {
   std::string name;
   double simulated_us = 0;
@@ -41,6 +51,7 @@ struct RunReport {
   std::vector<LinkReport> links;
   std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
   ResultValue workload;
+  std::vector<TraceTrack> tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)
 
   ResultValue to_value() const;
 };

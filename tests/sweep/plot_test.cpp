@@ -1,0 +1,91 @@
+// tools/plot on generated inputs: each picture is written, in the format the -o extension asks for,
+// and bad inputs are one-line errors. Skipped where Debian's python3-matplotlib is missing
+// (scripts/setup.sh installs it).
+#include <gtest/gtest.h>
+
+#include "sweep_fixtures.hpp"
+
+using sweep_test::fresh_dir;
+using sweep_test::read_file;
+
+namespace {
+
+cli_test::Output plot(const std::string& args) {
+  const std::string command =
+      "cd " T800SIM_SOURCE_DIR " && timeout 120 tools/plot " + args + " 2>&1";
+  cli_test::Output o;
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) o.out.append(buffer, n);
+  const int status = pclose(pipe);
+  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
+}
+
+bool is_png(const std::string& path) {
+  return read_file(path).rfind("\x89PNG\r\n\x1a\n", 0) == 0;
+}
+
+class Plot : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!sweep_test::available("/usr/bin/python3 -c 'import matplotlib'"))
+      GTEST_SKIP() << "python3-matplotlib is not installed";
+    dir_ = fresh_dir();
+  }
+  std::string dir_;
+};
+
+}  // namespace
+
+TEST_F(Plot, GanttFromARunsCsvTrace) {
+  ASSERT_EQ(
+      cli_test::run("run configs/scenes/pingpong.toml --set workload.iterations=3 --trace-csv " +
+                    dir_ + "/t.csv")
+          .exit_code,
+      0);
+  const auto o = plot("gantt " + dir_ + "/t.csv -o " + dir_ + "/g.png");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  EXPECT_TRUE(is_png(dir_ + "/g.png"));
+}
+
+TEST_F(Plot, SpeedupFromASweepWithThePaperOverlaid) {
+  sweep_test::write_file(
+      dir_ + "/r.csv",
+      "network.workers,tp_us,speedup,efficiency,util_min,util_mean,util_max,wall_s,status\n"
+      "1,25600,1,1,0.1,0.5,1,0.1,ok\n3,9000,2.84,0.95,0.1,0.5,1,0.1,ok\n"
+      "6,4600,5.57,0.93,0.1,0.5,1,0.1,ok\n9,0,,,,,,0.1,\"error: x\"\n");
+  auto o = plot("speedup " + dir_ + "/r.csv --paper -o " + dir_ + "/s.svg");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  const std::string svg = read_file(dir_ + "/s.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  o = plot("speedup " + dir_ + "/r.csv -o " + dir_ + "/s.png");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  EXPECT_TRUE(is_png(dir_ + "/s.png"));
+}
+
+TEST_F(Plot, UtilisationFromARunReport) {
+  const auto run = cli_test::run("run configs/scenes/pingpong.toml --json");
+  ASSERT_EQ(run.exit_code, 0);
+  sweep_test::write_file(dir_ + "/report.json", run.out);
+  const auto o = plot("utilisation " + dir_ + "/report.json -o " + dir_ + "/u.png");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  EXPECT_TRUE(is_png(dir_ + "/u.png"));
+}
+
+TEST_F(Plot, BadInputsAreOneLineErrors) {
+  sweep_test::write_file(dir_ + "/r.csv", "workload.bytes,tp_us,status\n1,2,ok\n");
+  auto o = plot("speedup " + dir_ + "/r.csv -o " + dir_ + "/s.png");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.out.find("no column network.workers"), std::string::npos) << o.out;
+  o = plot("gantt " + dir_ + "/missing.csv -o " + dir_ + "/g.png");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.out.find("missing.csv"), std::string::npos) << o.out;
+  o = plot("utilisation " + dir_ + "/r.csv -o " + dir_ + "/u.png");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.out.find("not a t800sim run --json report"), std::string::npos) << o.out;
+  o = plot("gantt " + dir_ + "/r.csv -o " + dir_ + "/g.jpg");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.out.find(".png or .svg"), std::string::npos) << o.out;
+  EXPECT_EQ(o.out.find("Traceback"), std::string::npos) << o.out;
+}

@@ -1,0 +1,29 @@
+// The trace files a run can write (--trace-vcd, --trace-json, --trace-csv). Off by default: only
+// when one is asked for does the run keep per-interval records
+// (network::MachineOptions::keep_intervals).
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "workloads/run/run.hpp"
+
+namespace tools {
+
+struct TraceFiles {
+  std::string vcd, json, csv;
+  bool any() const { return !vcd.empty() || !json.empty() || !csv.empty(); }
+};
+
+void add_trace_options(CLI::App& cmd, TraceFiles& files);
+
+// Throws std::invalid_argument naming the flag when a file cannot be written (checked before the
+// run, so a typo in a path does not cost a simulation).
+void check_trace_files(const TraceFiles& files);
+
+// Writes the asked-for traces of a finished run; the VCD through a `t800sim vcd` child
+// (trace_vcd.hpp says why). Throws std::invalid_argument.
+void write_traces(const workloads::RunReport& report, const TraceFiles& files);
+
+}  // namespace tools

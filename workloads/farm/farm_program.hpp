@@ -1,0 +1,84 @@
+// The paper's processor farm as a program that serves evaluations: a master process calls evaluate() for
+// each state (once for Table 4, four times per RK4 step in a trajectory); the workers loop over rounds
+// until finish(). Used by the dynamics-farm and trajectory workloads.
+//
+// One round: the master computes sin/cos of the joint angles once and sends them to every worker; workers
+// evaluate their subtasks -- each costed by the operations of the code that computes it -- and return the
+// values; the master forms c and assembles D, C, h. Workers that are not the master's neighbours are reached
+// through software routers on the processors between (network/channel.hpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "network/machine.hpp"
+#include "workloads/dynamics/assembly.hpp"
+#include "workloads/dynamics/subtask_set.hpp"
+#include "workloads/dynamics/worker_input.hpp"
+#include "workloads/farm/farm_tasks.hpp"
+#include "workloads/farm/schedule.hpp"
+
+namespace workloads {
+
+struct FarmSettings {
+  dynamics::ModelVariant variant = dynamics::ModelVariant::paper;
+  std::string schedule = "static";  // static | on-demand | explicit
+  std::string allocation;           // for explicit
+  int buffer = 2;                   // on-demand: subtasks in flight per worker
+};
+
+// The timing of one round, as the master saw it.
+struct FarmRound {
+  double start_us = 0, end_us = 0;         // evaluate() called -> D, C, c, h assembled
+  double farm_start_us = 0, farm_end_us = 0;  // first input sent -> last result received
+  std::vector<double> busy_in_farm_us;     // per worker, its busy time inside the farm window
+};
+
+template <class S>
+class FarmProgram {
+ public:
+  FarmProgram(const dynamics::RobotModel& model, FarmSettings settings, int master, std::vector<int> workers);
+
+  // Before the run: works out the costs and the allocation, declares the channels, places the workers.
+  void build(network::Machine& m);
+  // Called from the master's process: one evaluation at (q, qd) into `data`.
+  FarmRound evaluate(network::Process& master, const dynamics::JointVector& q, const dynamics::JointVector& qd,
+                     dynamics::DynamicsData<S>& data);
+  // Called from the master's process after the last evaluation: every worker ends.
+  void finish(network::Process& master);
+
+  const FarmWork& work() const { return work_; }
+  const std::vector<int>& workers() const { return workers_; }
+  // The subtasks each worker ran in the last round (indices into work().tasks).
+  const std::vector<std::vector<int>>& done_by() const { return done_by_; }
+  std::vector<dynamics::Subtask> subtasks() const;
+
+ private:
+  static constexpr std::int64_t kReal = sizeof(S);
+  Allocation allocate(const network::Machine& m) const;
+  bool has_work(std::size_t w) const;
+  std::vector<double> workers_busy_now(network::Machine& m) const;
+  void collect(network::Process& p, std::size_t w, dynamics::DynamicsData<S>& data);
+  void hand_out(network::Process& p, std::size_t w, dynamics::DynamicsData<S>& data);
+  void worker(network::Process& p, std::size_t w);
+  void static_round(network::Process& p, std::size_t w, const dynamics::WorkerInput<S>& input);
+  void on_demand_round(network::Process& p, std::size_t w, const dynamics::WorkerInput<S>& input);
+  S run_task(network::Process& p, int t, const dynamics::WorkerInput<S>& input);
+  const std::vector<int>& dispatch_order();
+
+  const dynamics::RobotModel& model_;
+  FarmSettings settings_;
+  int master_;
+  std::vector<int> workers_;
+  FarmWork work_;
+  Allocation allocation_;
+  std::vector<network::Channel*> to_, from_, queue_;
+  std::vector<std::vector<int>> done_by_;
+  std::vector<int> order_;
+  int next_ = 0;
+};
+
+extern template class FarmProgram<float>;
+extern template class FarmProgram<double>;
+
+}  // namespace workloads
