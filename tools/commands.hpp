@@ -9,6 +9,7 @@ void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_paper_command(CLI::App& app);  // also `calibrate`
 void add_dynamics_command(CLI::App& app);
+void add_stress_command(CLI::App& app);  // numerical stability of elimination and integration
 void add_sweep_command(CLI::App& app);
 void add_merge_command(CLI::App& app);
 void add_vcd_command(CLI::App& app);  // trace CSV -> VCD, through SystemC's sc_trace

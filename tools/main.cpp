@@ -16,6 +16,7 @@ int sc_main(int argc, char* argv[]) {
   tools::add_check_command(app);
   tools::add_paper_command(app);
   tools::add_dynamics_command(app);
+  tools::add_stress_command(app);
   tools::add_sweep_command(app);
   tools::add_merge_command(app);
   tools::add_vcd_command(app);

@@ -14,6 +14,7 @@
 #include "tools/commands.hpp"
 #include "tools/paper_data.hpp"
 #include "tools/scene.hpp"
+#include "workloads/pipeline/pipeline.hpp"
 
 namespace tools {
 
@@ -94,7 +95,7 @@ json elimination_table(const PaperArgs& a, const PaperTables& paper) {
   json t6 = {{"table", 6}, {"scene", a.elimination_scene}, {"rows", json::array()}};
   for (std::size_t i = 0; i < paper.table6_m.size(); ++i) {
     std::vector<std::string> o = overrides;
-    o.push_back("workload.m=" + std::to_string(paper.table6_m[i]));
+    for (const std::string& m : workloads::table6_overrides(paper.table6_m[i])) o.push_back(m);
     const double tp = run_scene_child(a.elimination_scene, o)["workload"]["tp_ms"].get<double>();
     t6["rows"].push_back({{"m", paper.table6_m[i]},
                           {"paper_ms", paper.table6_tp_ms[i]},
@@ -156,6 +157,12 @@ bool elimination_available(const std::string& scene) {
 int run_paper(PaperArgs a) {
   const PaperTables paper = load_paper_tables(find_repository_file("configs/paper/paper.toml"));
   a.farm_scene = find_repository_file(a.farm_scene);
+  if (a.table == 6 || a.table == 0) {
+    try {
+      a.elimination_scene = find_repository_file(a.elimination_scene);
+    } catch (const std::runtime_error&) {
+    }
+  }
   std::vector<json> tables;
   if (a.table == 0 || a.table == 4 || a.table == 5) {
     auto [t4, t5] = farm_tables(a, paper);

@@ -137,6 +137,7 @@ class SceneReader {
   network::Topology from_file(const toml::node& path) const;
   void workload(Scene& scene) const;
   void calibration(Scene& scene) const;
+  void calibration_values(const toml::table& t, Scene& scene) const;
   workloads::ParamValue param(const workloads::ParamSpec& spec, const toml::node& value,
                               const network::Topology& topology) const;
 
@@ -353,12 +354,26 @@ void SceneReader::workload(Scene& scene) const {
 }
 
 // [calibration] holds the one constant the paper's data may fit, and says how it was fitted: a fitted number
-// without its provenance is not accepted.
+// without its provenance is not accepted. `file` names the project's calibration file (one source for every
+// scene); a code_efficiency given in the scene itself (or by --set) takes precedence over the file's.
 void SceneReader::calibration(Scene& scene) const {
   const toml::node* node = root_.get("calibration");
   if (!node) return;
   const toml::table& t = table(*node, "calibration");
-  check_keys(t, {"code_efficiency", "fitted"}, "[calibration]");
+  check_keys(t, {"file", "code_efficiency", "fitted"}, "[calibration]");
+  if (const toml::node* file = t.get("file")) {
+    const fs::path path = fs::path(file_).parent_path() / text(*file, "calibration.file");
+    const toml::table shared = network::parse_toml_file(path.string(), "calibration file");
+    const toml::node* inner = shared.get("calibration");
+    if (!inner || !inner->is_table())
+      fail(*file, "the calibration file " + path.string() + " has no [calibration] table");
+    SceneReader(shared, path.string()).calibration_values(*inner->as_table(), scene);
+  }
+  if (t.contains("code_efficiency") || !t.contains("file")) calibration_values(t, scene);
+}
+
+void SceneReader::calibration_values(const toml::table& t, Scene& scene) const {
+  check_keys(t, {"file", "code_efficiency", "fitted"}, "[calibration]");
   const toml::node* factor = t.get("code_efficiency");
   if (!factor) fail(t, "[calibration] has no code_efficiency: set code_efficiency = 1.0 (no calibration)");
   if (!factor->is_number())
@@ -370,7 +385,7 @@ void SceneReader::calibration(Scene& scene) const {
   const toml::node* fitted = t.get("fitted");
   if (!fitted && scene.code_efficiency != 1.0)
     fail(t, "[calibration] sets code_efficiency but not `fitted`: say how and on what data it was fitted");
-  if (fitted) scene.calibration_note = text(*fitted, "calibration.fitted");
+  scene.calibration_note = fitted ? text(*fitted, "calibration.fitted") : std::string();
 }
 
 Scene SceneReader::read() {

@@ -6,6 +6,7 @@
 
 #include "workloads/farm/dynamics_farm.hpp"
 #include "workloads/links/link_workloads.hpp"
+#include "workloads/pipeline/pipeline.hpp"
 
 namespace workloads {
 
@@ -17,6 +18,7 @@ const std::map<std::string, Factory>& factories() {
       {"pingpong", make_pingpong},
       {"link-stream", make_link_stream},
       {"dynamics-farm", make_dynamics_farm},
+      {"elimination", make_elimination},
   };
   return f;
 }

@@ -1,0 +1,145 @@
+// The four-level pipeline on the elimination-m<m> topologies: bit-identical to the sequential
+// solver, failures that stop every level cleanly. One simulation per test (each test is its own
+// process under ctest). No assertion on times.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "network/machine.hpp"
+#include "network/topology_file.hpp"
+#include "tests/elimination/elimination_fixtures.hpp"
+#include "workloads/pipeline/pipeline.hpp"
+
+namespace {
+
+using namespace elimination_test;
+using elimination::Pivoting;
+using elimination::Status;
+
+struct PipelineRun {
+  workloads::PipelineOutcome outcome;
+  std::vector<network::BlockedProcess> blocked;
+  bool matches_sequential = false;
+};
+
+PipelineRun run_pipeline(int m, const elimination::LinearSystem<double>& system,
+                         const elimination::PivotRule& r, t800::Precision precision) {
+  const network::Topology topology = network::load_topology(std::string(T800SIM_SOURCE_DIR) + "/" +
+                                                            workloads::elimination_topology(m));
+  network::MachineOptions options;
+  options.precision = precision;
+  network::Machine machine(topology, options);
+  workloads::PipelineSettings settings;
+  settings.m = m;
+  settings.precision = precision;
+  settings.rule = r;
+  workloads::EliminationPipeline pipeline(settings, system, topology);
+  pipeline.build(machine);
+  PipelineRun run;
+  run.blocked = machine.run();
+  run.outcome = pipeline.outcome();
+  if (run.blocked.empty())
+    run.matches_sequential =
+        pipeline.results(machine).get("matches_sequential")->to_json() == "true";
+  return run;
+}
+
+template <class T>
+void expect_same_as_sequential(int m, const elimination::LinearSystem<double>& system,
+                               const elimination::PivotRule& r) {
+  const auto precision =
+      std::is_same_v<T, double> ? t800::Precision::real64 : t800::Precision::real32;
+  const PipelineRun run = run_pipeline(m, system, r, precision);
+  ASSERT_TRUE(run.blocked.empty())
+      << run.blocked.front().process << ": " << run.blocked.front().status;
+  const auto data = elimination::convert<T>(system);
+  const auto expected = elimination::solve(data.a, data.b, r);
+  ASSERT_EQ(run.outcome.status, expected.status);
+  ASSERT_EQ(run.outcome.qdd.size(), expected.x.size());
+  for (std::size_t i = 0; i < expected.x.size(); ++i)
+    EXPECT_EQ(run.outcome.qdd[i], static_cast<double>(expected.x[i])) << "unknown " << i;  // exact
+  EXPECT_EQ(run.outcome.pivot_rows, expected.pivot_rows);
+  EXPECT_EQ(run.outcome.interchanges, expected.interchanges);
+  EXPECT_TRUE(run.matches_sequential);
+  EXPECT_GT(run.outcome.tp_us(), 0.0);
+}
+
+class PipelineM : public ::testing::TestWithParam<int> {};
+
+TEST_P(PipelineM, ArmReal64SimpleEqualsSequential) {
+  expect_same_as_sequential<double>(GetParam(), reference_system(), rule(Pivoting::simple));
+}
+
+TEST_P(PipelineM, ArmReal32SimpleEqualsSequential) {
+  expect_same_as_sequential<float>(GetParam(), reference_system(), rule(Pivoting::simple));
+}
+
+// A random system needs interchanges under partial pivoting; the growth check is on.
+TEST_P(PipelineM, RandomPartialWithInterchangesEqualsSequential) {
+  const auto system = elimination::random_system(6, 7);
+  ASSERT_GT(elimination::solve(system.a, system.b, rule(Pivoting::partial)).interchanges, 0);
+  expect_same_as_sequential<double>(GetParam(), system, rule(Pivoting::partial, 0, 1e8));
+}
+
+// A zero pivot: simple interchange on every level's data.
+TEST_P(PipelineM, ZeroPivotInterchangeEqualsSequential) {
+  auto system = elimination::random_system(6, 3);
+  system.a[0][0] = 0;
+  expect_same_as_sequential<double>(GetParam(), system, rule(Pivoting::simple));
+}
+
+// A singular system fails at level 1 in the last step; a NaN fails at level 3 in the first: both
+// are reported and every process ends. (The last column is zero, so the last pivot is an exact
+// zero: a singularity that rounding turns into a tiny pivot is what the growth check is for.)
+TEST_P(PipelineM, SingularSystemIsReportedAndNothingDeadlocks) {
+  auto system = elimination::random_system(6, 5);
+  for (auto& row : system.a) row[5] = 0;
+  const PipelineRun run =
+      run_pipeline(GetParam(), system, rule(Pivoting::simple), t800::Precision::real64);
+  EXPECT_TRUE(run.blocked.empty());
+  EXPECT_EQ(run.outcome.status, Status::no_pivot);
+  EXPECT_EQ(run.outcome.failed_step, 5);
+  EXPECT_TRUE(run.outcome.qdd.empty());
+  EXPECT_NE(run.outcome.failure.find("level 1"), std::string::npos) << run.outcome.failure;
+}
+
+TEST_P(PipelineM, NonFiniteIsReportedByLevelThree) {
+  auto system = elimination::random_system(6, 5);
+  system.a[3][2] = std::numeric_limits<double>::quiet_NaN();
+  const PipelineRun run =
+      run_pipeline(GetParam(), system, rule(Pivoting::simple), t800::Precision::real64);
+  EXPECT_TRUE(run.blocked.empty());
+  EXPECT_EQ(run.outcome.status, Status::non_finite);
+  EXPECT_EQ(run.outcome.failed_step, 0);
+  EXPECT_NE(run.outcome.failure.find("level 3"), std::string::npos) << run.outcome.failure;
+}
+
+TEST_P(PipelineM, TinyPivotIsFlaggedByTheGrowthCheck) {
+  auto system = elimination::random_system(6, 9);
+  system.a[0][0] = 1e-15;
+  const PipelineRun run =
+      run_pipeline(GetParam(), system, rule(Pivoting::simple, 0, 1e8), t800::Precision::real64);
+  EXPECT_TRUE(run.blocked.empty());
+  EXPECT_EQ(run.outcome.status, Status::unstable);
+  EXPECT_EQ(run.outcome.failed_step, 0);
+  EXPECT_FALSE(run.outcome.qdd.empty());
+  EXPECT_TRUE(run.matches_sequential);
+}
+
+INSTANTIATE_TEST_SUITE_P(Topologies, PipelineM, ::testing::Values(1, 2, 3, 4, 5),
+                         [](const auto& info) { return "m" + std::to_string(info.param); });
+
+TEST(Pipeline, RejectsATopologyWithTooFewLevelTwoProcessors) {
+  const network::Topology topology = network::load_topology(std::string(T800SIM_SOURCE_DIR) + "/" +
+                                                            workloads::elimination_topology(2));
+  workloads::PipelineSettings settings;
+  settings.m = 3;
+  try {
+    workloads::EliminationPipeline pipeline(settings, reference_system(), topology);
+    FAIL() << "m = 3 on a 2-processor topology was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("elimination-m3.toml"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace

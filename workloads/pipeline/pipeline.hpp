@@ -1,0 +1,86 @@
+// The paper's Gaussian-elimination pipeline (Fig. 7) on a network of T800s, workload kind
+// "elimination":
+//   L1       augments D with the right-hand side, checks the pivot (simple interchange or partial
+//            pivoting), normalises the pivot row, hands the other rows to level 2 (round-robin,
+//            schedule.hpp), and gets the reduced matrix back from L3 for the next step;
+//   E1..Em   level 2: eliminate the leading element of each row they get; E1 also forwards the
+//            pivot row to L3;
+//   L3       collects the rows, checks that all arrived and are finite (and, with the growth check,
+//            how much the pivots have grown), rebuilds the reduced matrix and returns it to L1;
+//            passes each pivot row (a row of U) on to L4;
+//   L4       back substitution: q̈.
+// Every level calls the same pieces as the sequential solver (workloads/elimination/gauss.hpp), so
+// q̈ is bit-identical to elimination::solve at the same precision and pivoting. Costs come from the
+// pieces' counted work through the machine's CostModel; message sizes are the REAL32/REAL64 rows
+// plus one INT32 header word (row number or step, and a status flag).
+//
+// Tp: from the moment L1 has received the system from the host until L4 has q̈ (the host link's
+// input time is reported apart as input_us). The topologies are configs/topologies/
+// elimination-m1..m5.toml; processors are found by name: L1, E1..Em, L3, L4 (X and Y, where
+// present, are link processors that run only the relays of relay.hpp).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "t800/cost_model.hpp"
+#include "workloads/elimination/gauss.hpp"
+#include "workloads/elimination/system.hpp"
+#include "workloads/run/workload.hpp"
+
+namespace workloads {
+
+struct PipelineSettings {
+  int m = 0;  // level-2 processors used, E1..Em; 0 = every E<i> the topology has
+  t800::Precision precision = t800::Precision::real64;
+  elimination::PivotRule rule;
+};
+
+// What one run produced; read it after Machine::run().
+struct PipelineOutcome {
+  elimination::Status status = elimination::Status::ok;
+  int failed_step = -1;
+  std::string failure;          // which level saw what, for the report; empty when solved
+  std::vector<double> qdd;      // the solution, exactly as computed (float widens exactly)
+  std::vector<int> pivot_rows;  // original row of each step's pivot
+  int interchanges = 0;
+  double growth = 1;
+  double input_start_us = 0, start_us = 0, end_us = 0;
+  std::vector<double> step_start_us;  // when L1 began each step's pivot search
+  double tp_us() const { return end_us - start_us; }
+};
+
+class EliminationPipeline : public Workload {
+ public:
+  // The system is given in double and rounded to the precision (REAL32: to float).
+  EliminationPipeline(const PipelineSettings& settings,
+                      const elimination::LinearSystem<double>& system,
+                      const network::Topology& topology);
+  ~EliminationPipeline() override;
+
+  void build(network::Machine& machine) override;
+  ResultValue results(const network::Machine& machine) const override;
+  const PipelineOutcome& outcome() const;
+  int m() const;
+
+  class Engine;
+
+ private:
+  std::unique_ptr<Engine> engine_;
+};
+
+// The "elimination" workload kind from a scene's parameters (catalog.cpp).
+std::unique_ptr<Workload> make_elimination(const WorkloadContext& context);
+
+// ---- Table 6 ----
+// The scene to run: configs/scenes/elimination.toml (relative to the repository root).
+constexpr const char* kEliminationScene = "configs/scenes/elimination.toml";
+// The topology for m level-2 processors, relative to the repository root:
+// "configs/topologies/elimination-m3.toml".
+std::string elimination_topology(int m);
+// The --set overrides that run kEliminationScene for m (1..5): the m-processor topology (relative
+// to the scene file, as scenes name topologies) and workload.m.
+std::vector<std::string> table6_overrides(int m);
+
+}  // namespace workloads

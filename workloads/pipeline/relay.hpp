@@ -1,0 +1,36 @@
+// Link processors for level 2 processors that L1 or L3 cannot reach directly (four links per T800):
+// a fan-out X between L1 and some level-2 processors, a fan-in Y between them and L3. They run
+// what an occam programmer of 1990 wrote for this (the T800 has no hardware routing): an input
+// process and one output process per link, joined by internal channels, so that X takes the next
+// row from L1 while it is still sending the previous one on. X receives each step's pivot row once
+// and copies it to every processor it serves. They know the pipeline's schedule (schedule.hpp),
+// so no routing header is needed; they stop on a failure message.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "network/machine.hpp"
+#include "workloads/pipeline/schedule.hpp"
+
+namespace workloads {
+
+// The label of a failure message (a bare header word): relays pass it on and stop.
+constexpr const char* kFailLabel = "fail";
+
+struct Relay {
+  int node = -1;
+  std::vector<int> served;  // level-2 processors (0-based) behind this relay, ascending
+  // Fan-out: one input (from L1) and one output per served processor. Fan-in: the reverse.
+  std::vector<network::Channel*> inputs, outputs;
+};
+
+void spawn_fan_out(network::Machine& machine, const PipelineShape& shape, const Relay& relay);
+void spawn_fan_in(network::Machine& machine, const PipelineShape& shape, const Relay& relay);
+
+// The served processors of a relay that take part in step k, and the rows (in order) it carries.
+std::vector<int> relay_participants(const PipelineShape& shape, const Relay& relay, int k);
+std::vector<std::size_t> relay_rows(const PipelineShape& shape, const std::vector<int>& served,
+                                    int k);
+
+}  // namespace workloads
