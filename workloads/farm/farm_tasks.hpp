@@ -12,11 +12,9 @@
 #include "workloads/dynamics/robot_model.hpp"
 #include "workloads/dynamics/subtask.hpp"
 #include "workloads/dynamics/subtask_set.hpp"
+#include "workloads/run/operation_mix.hpp"
 
 namespace workloads {
-
-// Counted floating-point work -> the T800 operation mix. Each subtask runs as one occam PROC call.
-t800::OperationMix to_operation_mix(const dynamics::OpCounts& counts);
 
 struct FarmTask {
   dynamics::Subtask subtask;

@@ -13,6 +13,7 @@
 
 #include "t800/operation_mix.hpp"
 #include "workloads/elimination/work.hpp"
+#include "workloads/run/operation_mix.hpp"
 
 namespace workloads {
 
