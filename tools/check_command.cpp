@@ -12,12 +12,10 @@ void add_check_command(CLI::App& app) {
   auto file = std::make_shared<std::string>();
   cmd->add_option("file", *file, "scene or topology TOML file")->required();
   cmd->callback([file] {
-    try {
+    run_command([&] {
       std::cout << "ok: " << check_file(*file) << "\n";
-    } catch (const network::ConfigError& e) {
-      std::cerr << e.what() << "\n";
-      std::exit(kExitBadInput);
-    }
+      return kExitOk;
+    });
   });
 }
 

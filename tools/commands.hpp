@@ -1,6 +1,8 @@
 // The t800sim sub-commands. Each registers itself on the application; main.cpp only assembles them.
 #pragma once
 
+#include <functional>
+
 #include <CLI/CLI.hpp>
 
 namespace tools {
@@ -18,5 +20,10 @@ void add_vcd_command(CLI::App& app);  // trace CSV -> VCD, through SystemC's sc_
 constexpr int kExitOk = 0;
 constexpr int kExitFailure = 1;     // the simulated program did not finish (deadlock) or a check failed
 constexpr int kExitBadInput = 2;    // a configuration or command-line error
+
+// Runs a command's body and exits with the code it returns. Errors become one message on stderr: a
+// configuration error (file:line:column), a bad argument or an unusable path exits kExitBadInput; any other
+// failure exits kExitFailure. The one place commands turn exceptions into exit codes.
+[[noreturn]] void run_command(const std::function<int()>& body);
 
 }  // namespace tools

@@ -154,19 +154,12 @@ void add_dynamics_command(CLI::App& app) {
   cmd->add_option("--scene", a->scene, "the farm scene whose calibration prices the cycles")->capture_default_str();
   cmd->add_flag("--json", a->json_output, "print JSON");
   cmd->callback([a] {
-    int code = kExitOk;
-    try {
+    run_command([&] {
       const dynamics::RobotModel model = load_robot(find_repository_file(a->robot));
       const json r = a->precision == "real32" ? evaluate<float>(*a, model) : evaluate<double>(*a, model);
       std::cout << (a->json_output ? r.dump(2) + "\n" : text_of(r));
-    } catch (const network::ConfigError& e) {
-      std::cerr << e.what() << "\n";
-      code = kExitBadInput;
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitBadInput;
-    }
-    std::exit(code);
+      return kExitOk;
+    });
   });
 }
 

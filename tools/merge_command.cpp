@@ -104,19 +104,7 @@ void add_merge_command(CLI::App& app) {
   cmd->add_option("results", a->inputs, "JSON result files, or directories holding them")
       ->required();
   cmd->add_option("-o,--output", a->output, "the CSV table to write")->required();
-  cmd->callback([a] {
-    int code = kExitOk;
-    try {
-      code = merge(*a);
-    } catch (const std::invalid_argument& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitBadInput;
-    } catch (const fs::filesystem_error& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitBadInput;
-    }
-    std::exit(code);
-  });
+  cmd->callback([a] { run_command([&] { return merge(*a); }); });
 }
 
 }  // namespace tools

@@ -160,7 +160,7 @@ int run_paper(PaperArgs a) {
   if (a.table == 6 || a.table == 0) {
     try {
       a.elimination_scene = find_repository_file(a.elimination_scene);
-    } catch (const std::runtime_error&) {
+    } catch (const std::invalid_argument&) {
     }
   }
   std::vector<json> tables;
@@ -198,21 +198,6 @@ int run_calibrate(const PaperArgs& a) {
   return kExitOk;
 }
 
-template <class F>
-void guarded(F&& body) {
-  int code = kExitOk;
-  try {
-    code = body();
-  } catch (const network::ConfigError& e) {
-    std::cerr << e.what() << "\n";
-    code = kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    code = kExitFailure;
-  }
-  std::exit(code);
-}
-
 void add_scene_options(CLI::App* cmd, PaperArgs& a) {
   cmd->add_option("--scene", a.farm_scene, "the dynamics-farm scene")->capture_default_str();
   cmd->add_option("--set", a.overrides, "override a scene key for every run, e.g. --set network.link_speed_mbps=10")
@@ -232,14 +217,14 @@ void add_paper_command(CLI::App& app) {
   cmd->add_option("--elimination-scene", a->elimination_scene, "the elimination scene (Table 6)")
       ->capture_default_str();
   add_scene_options(cmd, *a);
-  cmd->callback([a] { guarded([&] { return run_paper(*a); }); });
+  cmd->callback([a] { run_command([&] { return run_paper(*a); }); });
 
   auto c = std::make_shared<PaperArgs>();
   auto* cal = app.add_subcommand("calibrate",
                                  "Fit the occam code-efficiency factor on Table 4's 1-worker Tp (the one fitted "
                                  "constant) and print the [calibration] lines to record in the scene");
   add_scene_options(cal, *c);
-  cal->callback([c] { guarded([&] { return run_calibrate(*c); }); });
+  cal->callback([c] { run_command([&] { return run_calibrate(*c); }); });
 }
 
 }  // namespace tools

@@ -67,7 +67,7 @@ std::string find_repository_file(const std::string& relative) {
   if (fs::exists(relative)) return relative;
   const fs::path built = fs::path(T800SIM_SOURCE_DIR) / relative;
   if (fs::exists(built)) return built.string();
-  throw std::runtime_error("cannot find " + relative + " in the working directory or in " +
+  throw std::invalid_argument("cannot find " + relative + " in the working directory or in " +
                            std::string(T800SIM_SOURCE_DIR) + "; run from the repository root");
 }
 

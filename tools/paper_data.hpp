@@ -21,7 +21,7 @@ struct PaperTables {
 PaperTables load_paper_tables(const std::string& path);
 
 // A repository file (e.g. "configs/paper/paper.toml") from the working directory, or else from the source
-// tree t800sim was built from; throws std::runtime_error naming both places when neither has it.
+// tree t800sim was built from; throws std::invalid_argument naming both places when neither has it.
 std::string find_repository_file(const std::string& relative);
 
 }  // namespace tools

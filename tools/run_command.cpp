@@ -42,19 +42,7 @@ void add_run_command(CLI::App& app) {
       ->type_name("KEY=VALUE");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the text report");
   add_trace_options(*cmd, args->traces);
-  cmd->callback([args] {
-    int code = kExitOk;
-    try {
-      code = run_scene(*args);
-    } catch (const network::ConfigError& e) {
-      std::cerr << e.what() << "\n";
-      code = kExitBadInput;
-    } catch (const std::invalid_argument& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitBadInput;
-    }
-    std::exit(code);
-  });
+  cmd->callback([args] { run_command([&] { return run_scene(*args); }); });
 }
 
 }  // namespace tools

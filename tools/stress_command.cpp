@@ -137,13 +137,11 @@ void add_stress_command(CLI::App& app) {
   cmd->add_option("--seed", options->seed, "random seed")->capture_default_str();
   cmd->add_option("--robot", options->robot, "robot model file")->capture_default_str();
   cmd->callback([options, json] {
-    try {
+    run_command([&] {
       const ResultValue report = run_stress(*options);
       std::cout << (*json ? report.to_json() + "\n" : stress_summary(report));
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      std::exit(kExitBadInput);
-    }
+      return kExitOk;
+    });
   });
 }
 

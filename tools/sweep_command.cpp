@@ -305,22 +305,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--point", a->point,
                   "run only point I (0-based; what each emitted job does) and write its "
                   "JSON result to -o");
-  cmd->callback([a] {
-    int code = kExitOk;
-    try {
-      code = sweep(*a);
-    } catch (const network::ConfigError& e) {
-      std::cerr << e.what() << "\n";
-      code = kExitBadInput;
-    } catch (const std::invalid_argument& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitBadInput;
-    } catch (const fs::filesystem_error& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitBadInput;
-    }
-    std::exit(code);
-  });
+  cmd->callback([a] { run_command([&] { return sweep(*a); }); });
 }
 
 }  // namespace tools

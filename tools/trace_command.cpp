@@ -30,16 +30,7 @@ void add_vcd_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("vcd", "Convert a CSV trace (run --trace-csv) to VCD for GTKWave");
   cmd->add_option("trace", a->csv, "CSV trace file")->required();
   cmd->add_option("-o,--output", a->output, "the VCD file to write")->required();
-  cmd->callback([a] {
-    int code = kExitOk;
-    try {
-      code = convert(*a);
-    } catch (const std::invalid_argument& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitBadInput;
-    }
-    std::exit(code);
-  });
+  cmd->callback([a] { run_command([&] { return convert(*a); }); });
 }
 
 }  // namespace tools
