@@ -7,6 +7,7 @@
 
 #include "network/config_error.hpp"
 #include "network/toml_util.hpp"
+#include "tools/child_run.hpp"
 
 namespace tools {
 
@@ -65,10 +66,13 @@ PaperTables load_paper_tables(const std::string& path) {
 std::string find_repository_file(const std::string& relative) {
   namespace fs = std::filesystem;
   if (fs::exists(relative)) return relative;
-  const fs::path built = fs::path(T800SIM_SOURCE_DIR) / relative;
-  if (fs::exists(built)) return built.string();
-  throw std::invalid_argument("cannot find " + relative + " in the working directory or in " +
-                           std::string(T800SIM_SOURCE_DIR) + "; run from the repository root");
+  // An installed t800sim is PREFIX/bin/t800sim with its data in PREFIX/share/t800sim.
+  const fs::path installed = fs::path(self_executable()).parent_path().parent_path() / "share" / "t800sim";
+  for (const fs::path& root : {fs::path(T800SIM_SOURCE_DIR), installed})
+    if (fs::exists(root / relative)) return (root / relative).string();
+  throw std::invalid_argument("cannot find " + relative + " in the working directory, in " +
+                              std::string(T800SIM_SOURCE_DIR) + " or in " + installed.string() +
+                              "; run from the repository root");
 }
 
 }  // namespace tools

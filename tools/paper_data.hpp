@@ -21,7 +21,8 @@ struct PaperTables {
 PaperTables load_paper_tables(const std::string& path);
 
 // A repository file (e.g. "configs/paper/paper.toml") from the working directory, or else from the source
-// tree t800sim was built from; throws std::invalid_argument naming both places when neither has it.
+// tree t800sim was built from, or else from the installed data (share/t800sim); throws std::invalid_argument
+// naming the places when none has it.
 std::string find_repository_file(const std::string& relative);
 
 }  // namespace tools

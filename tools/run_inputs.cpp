@@ -18,11 +18,17 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
     in.options.precision = *t800::parse_precision(scene.workload.text("precision"));
   in.kind = scene.workload_kind;
   in.params = scene.workload;
-  // A robot file is named relative to the scene that names it, like the scene's topology file.
+  // Files a workload names (robot, torque table, trajectory output) are relative to the scene that names
+  // them, like the scene's topology file.
+  const auto relative_to_scene = [&](const std::string& name) {
+    const std::filesystem::path path = scene.workload.text(name);
+    return path.is_absolute() ? path : std::filesystem::path(scene.file).parent_path() / path;
+  };
+  for (const char* file : {"torque_csv", "output_csv"})
+    if (scene.workload.has(file) && !scene.workload.text(file).empty())
+      in.params.set(file, relative_to_scene(file).string());
   if (scene.workload.has("robot")) {
-    const std::filesystem::path robot = scene.workload.text("robot");
-    const std::filesystem::path resolved =
-        robot.is_absolute() ? robot : std::filesystem::path(scene.file).parent_path() / robot;
+    const std::filesystem::path resolved = relative_to_scene("robot");
     in.robot = std::make_shared<const dynamics::RobotModel>(load_robot(resolved.string()));
   }
   return in;

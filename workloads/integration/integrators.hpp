@@ -22,6 +22,14 @@ enum class Method { rk4, semi_implicit_euler };
 const char* to_string(Method method);
 std::optional<Method> parse_method(std::string_view text);  // "rk4" | "semi-implicit-euler"
 int evaluations_per_step(Method method);
+// When each evaluation of a step happens, as a fraction of the step from its start, in the order
+// the steps below call f: RK4 0, ½, ½, 1; semi-implicit Euler 0. A time-dependent input (a torque
+// table) is read at these times.
+inline const double* stage_offsets(Method method) {
+  static constexpr double rk4[] = {0.0, 0.5, 0.5, 1.0};
+  static constexpr double euler[] = {0.0};
+  return method == Method::rk4 ? rk4 : euler;
+}
 
 // One RK4 step of (q, q̇)' = (q̇, f(q, q̇)).
 template <class S, class Accel>

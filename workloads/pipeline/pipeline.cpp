@@ -1,454 +1,53 @@
 #include "workloads/pipeline/pipeline.hpp"
 
-#include <algorithm>
-#include <any>
-#include <limits>
-#include <numeric>
 #include <stdexcept>
-
-#include "workloads/pipeline/costs.hpp"
-#include "workloads/pipeline/relay.hpp"
-#include "workloads/pipeline/schedule.hpp"
 
 namespace workloads {
 
-namespace {
-
-using elimination::Row;
-using elimination::Rows;
-using elimination::Status;
-using network::Process;
-
-// A channel out of L1 (into L3) and the level-2 processors whose rows it carries.
-struct Port {
-  network::Channel* channel = nullptr;
-  std::vector<int> served;
-};
-
-// One INT32 word in front of every row or matrix: the row's number (or the step) and a status flag.
-constexpr std::int64_t kHeaderBytes = 4;
-
-std::int64_t real_bytes(t800::Precision precision) {
-  return precision == t800::Precision::real64 ? 8 : 4;
-}
-
-struct Nodes {
-  int l1 = -1, l3 = -1, l4 = -1;
-  std::vector<int> e;
-};
-
-int require_node(const network::Topology& t, const std::string& name, const std::string& role) {
-  const int index = t.find(name);
-  if (index < 0)
-    throw std::invalid_argument("elimination: the topology " + t.name + " has no processor " +
-                                name + " (" + role +
-                                "); use configs/topologies/elimination-m<m>.toml");
-  return index;
-}
-
-int level2_count(const network::Topology& t) {
-  int m = 0;
-  while (t.find("E" + std::to_string(m + 1)) >= 0) ++m;
-  return m;
-}
-
-Nodes find_nodes(const network::Topology& t, int m) {
-  Nodes nodes;
-  nodes.l1 = require_node(t, "L1", "level 1");
-  nodes.l3 = require_node(t, "L3", "level 3");
-  nodes.l4 = require_node(t, "L4", "level 4");
-  for (int e = 1; e <= m; ++e)
-    nodes.e.push_back(require_node(t, "E" + std::to_string(e), "a level-2 processor"));
-  return nodes;
-}
-
-// Runs a piece of numerical work, then charges its counted cost to the process's CPU. The tally
-// ends before compute() lets the simulation switch to other processes.
-template <class F>
-auto run_piece(Process& p, const char* label, F&& f) {
-  elimination::Work work;
-  auto result = [&] {
-    elimination::WorkTally tally;
-    auto r = f();
-    work = tally.work();
-    return r;
-  }();
-  p.compute(to_operation_mix(work), label);
-  return result;
-}
-
-}  // namespace
-
-// The processes of one pipeline, on scalar T (float = REAL32, double = REAL64). Values are carried
-// as Counted<T>, which computes exactly what T computes.
+// The pipeline on scalar T (float = REAL32, double = REAL64), fed once by the host.
 class EliminationPipeline::Engine {
  public:
   virtual ~Engine() = default;
   virtual void build(network::Machine& machine) = 0;
   virtual ResultValue sequential_check() const = 0;
-  PipelineOutcome outcome;
-  PipelineSettings settings;
-  PipelineShape shape;
-  Nodes nodes;
+  virtual const PipelineOutcome& outcome() const = 0;
+  virtual const PipelineSettings& settings() const = 0;
+  virtual const PipelineShape& shape() const = 0;
 };
 
 namespace {
 
 template <class T>
 class EngineT : public EliminationPipeline::Engine {
-  using C = dynamics::Counted<T>;
-
-  struct PivotMessage {
-    bool ok = true;
-    bool unstable = false;  // set by L3 on its way to L4
-    Row<C> row;
-    C scale = C(0);  // step 0 only: level 3's growth check needs it
-
-    static PivotMessage failed() {
-      PivotMessage m;
-      m.ok = false;
-      return m;
-    }
-  };
-  struct RowMessage {
-    std::size_t index = 0;  // position in the reduced system
-    Row<C> values;
-  };
-  // The reduced matrix goes back to L1 one row per message, like every other row transfer; a
-  // failed step sends one header instead.
-  struct ReturnedRow {
-    bool ok = true;
-    Row<C> values;
-  };
-
  public:
   EngineT(const PipelineSettings& s, const elimination::LinearSystem<double>& system,
-          const Nodes& n)
-      : system_(elimination::convert<C>(system)),
-        input_scale_(elimination::largest_magnitude(elimination::augment(system_.a, system_.b))) {
-    settings = s;
-    nodes = n;
-    shape = {static_cast<int>(system.size()), s.m};
-  }
+          const PipelineNodes& nodes)
+      : system_(elimination::convert<T>(system)),
+        program_(s, nodes, static_cast<int>(system.size())) {}
 
+  // The host sends the system and is done: Tp ends on L4, and nothing moves after it.
   void build(network::Machine& machine) override {
-    host_in_ = &machine.channel("system", network::Machine::kHost, nodes.l1);
-    plan_level1_side(machine);
-    plan_level3_side(machine);
-    back_ = &machine.channel("L3->L1", nodes.l3, nodes.l1);
-    to_l4_ = &machine.channel("L3->L4", nodes.l3, nodes.l4);
-    const auto low = t800::Priority::low;
-    machine.spawn(network::Machine::kHost, "host", low, [this](Process& p) { host(p); });
-    machine.spawn(nodes.l1, "level1", low, [this](Process& p) { level1(p); });
-    for (int e = 0; e < shape.m; ++e)
-      machine.spawn(nodes.e[std::size_t(e)], "level2", low,
-                    [this, e](Process& p) { level2(p, e); });
-    machine.spawn(nodes.l3, "level3", low, [this](Process& p) { level3(p); });
-    machine.spawn(nodes.l4, "level4", low, [this](Process& p) { level4(p); });
+    program_.build(machine, network::Machine::kHost, Serve::once);
+    machine.spawn(network::Machine::kHost, "host", t800::Priority::low,
+                  [this](network::Process& p) { program_.send(p, system_); });
   }
 
   ResultValue sequential_check() const override {
-    const elimination::Solution<T> s = elimination::solve(
-        elimination::convert<T>(system_).a, elimination::convert<T>(system_).b, settings.rule);
-    bool same = s.status == outcome.status && s.x.size() == outcome.qdd.size();
+    const elimination::Solution<T> s = elimination::solve(system_.a, system_.b, settings().rule);
+    const PipelineOutcome& o = outcome();
+    bool same = s.status == o.status && s.x.size() == o.qdd.size();
     for (std::size_t i = 0; same && i < s.x.size(); ++i)
-      same = static_cast<double>(s.x[i]) == outcome.qdd[i];
+      same = static_cast<double>(s.x[i]) == o.qdd[i];
     return ResultValue(same);
   }
 
+  const PipelineOutcome& outcome() const override { return program_.outcome(); }
+  const PipelineSettings& settings() const override { return program_.settings(); }
+  const PipelineShape& shape() const override { return program_.shape(); }
+
  private:
-  std::int64_t reals(std::size_t count) const {
-    return kHeaderBytes + real_bytes(settings.precision) * static_cast<std::int64_t>(count);
-  }
-  int n() const { return shape.n; }
-
-  void fail(int step, Status status, const std::string& what) {
-    if (outcome.failure.empty()) {
-      outcome.status = status;
-      outcome.failed_step = step;
-      outcome.failure = what;
-    }
-  }
-
-  // ---- wiring: which channel reaches each level-2 processor ----
-
-  // A level-2 processor that is L1's (L3's) neighbour gets a channel of its own; one behind the
-  // fan-out X (fan-in Y) shares X's (Y's) channel; any other gets a channel the network routes.
-  void plan_level1_side(network::Machine& machine) {
-    Relay fan_out;
-    fan_out.node = machine.topology().find("X");
-    for (int e = 0; e < shape.m; ++e) {
-      const int node = nodes.e[std::size_t(e)];
-      const std::string name = "E" + std::to_string(e + 1);
-      if (!machine.link_between(nodes.l1, node) && behind(machine, fan_out.node, nodes.l1, node)) {
-        fan_out.served.push_back(e);
-        fan_out.outputs.push_back(&machine.channel("X->" + name, fan_out.node, node));
-        e_in_.push_back(fan_out.outputs.back());
-        continue;
-      }
-      e_in_.push_back(&machine.channel("L1->" + name, nodes.l1, node));
-      out_ports_.push_back({e_in_.back(), {e}});
-    }
-    if (fan_out.served.empty()) return;
-    fan_out.inputs.push_back(&machine.channel("L1->X", nodes.l1, fan_out.node));
-    out_ports_.push_back({fan_out.inputs.back(), fan_out.served});
-    spawn_fan_out(machine, shape, fan_out);
-  }
-
-  void plan_level3_side(network::Machine& machine) {
-    Relay fan_in;
-    fan_in.node = machine.topology().find("Y");
-    for (int e = 0; e < shape.m; ++e) {
-      const int node = nodes.e[std::size_t(e)];
-      const std::string name = "E" + std::to_string(e + 1);
-      // E1 also forwards the pivot rows, which the fan-in's schedule does not carry.
-      if (e > 0 && !machine.link_between(nodes.l3, node) &&
-          behind(machine, fan_in.node, nodes.l3, node)) {
-        fan_in.served.push_back(e);
-        fan_in.inputs.push_back(&machine.channel(name + "->Y", node, fan_in.node));
-        e_out_.push_back(fan_in.inputs.back());
-        e_behind_fan_in_.push_back(true);
-        continue;
-      }
-      e_out_.push_back(&machine.channel(name + "->L3", node, nodes.l3));
-      e_behind_fan_in_.push_back(false);
-      in_ports_.push_back({e_out_.back(), {e}});
-    }
-    if (fan_in.served.empty()) return;
-    fan_in.outputs.push_back(&machine.channel("Y->L3", fan_in.node, nodes.l3));
-    in_ports_.push_back({fan_in.outputs.back(), fan_in.served});
-    spawn_fan_in(machine, shape, fan_in);
-  }
-
-  static bool behind(const network::Machine& machine, int relay, int level, int node) {
-    return relay >= 0 && machine.link_between(relay, level) && machine.link_between(relay, node);
-  }
-
-  // ---- host: sends [D | b] to L1 (REAL values only); Tp starts when L1 has it ----
-  void host(Process& p) {
-    outcome.input_start_us = p.now_us();
-    const std::int64_t bytes =
-        real_bytes(settings.precision) * static_cast<std::int64_t>(n() * (n() + 1));
-    p.out(*host_in_, {bytes, system_, "system"});
-  }
-
-  // ---- level 1 ----
-  void level1(Process& p) {
-    auto system = std::any_cast<elimination::LinearSystem<C>>(p.in(*host_in_).payload);
-    outcome.start_us = p.now_us();
-    const auto& rule = settings.rule;
-    Rows<C> m = run_piece(p, "augment", [&] { return elimination::augment(system.a, system.b); });
-    const C scale = rule.needs_scale()
-                        ? run_piece(p, "scale", [&] { return elimination::matrix_scale(m); })
-                        : C(0);
-    const C limit = run_piece(p, "limit", [&] { return elimination::pivot_limit(scale, rule); });
-    std::vector<int> order(m.size());
-    std::iota(order.begin(), order.end(), 0);
-    for (int k = 0; k < n(); ++k) {
-      if (k > 0 && !receive_reduced(p, m)) return send_failure(p, k);
-      outcome.step_start_us.push_back(p.now_us());
-      auto step =
-          run_piece(p, "pivot", [&] { return elimination::pivot_step(m, order, rule, limit); });
-      if (!step.found) {
-        fail(k, elimination::pivot_failure(m),
-             "level 1: no usable pivot at step " + std::to_string(k));
-        return send_failure(p, k);
-      }
-      outcome.pivot_rows.push_back(order[0]);
-      if (step.interchanged) ++outcome.interchanges;
-      hand_out(p, k, PivotMessage{true, false, std::move(step.normalised), k == 0 ? scale : C(0)},
-               m);
-      order.erase(order.begin());
-    }
-  }
-
-  // The n - k rows of the reduced matrix from L3 (the first tells whether the step failed).
-  bool receive_reduced(Process& p, Rows<C>& m) {
-    const std::size_t rows = m.size() - 1;
-    Rows<C> reduced;
-    for (std::size_t i = 0; i < rows; ++i) {
-      auto row = std::any_cast<ReturnedRow>(p.in(*back_).payload);
-      if (!row.ok) return false;
-      reduced.push_back(std::move(row.values));
-    }
-    m = std::move(reduced);
-    return true;
-  }
-
-  // Every level-2 processor waiting in step k gets a failed pivot message; E1 passes it on, so
-  // L3 and L4 stop too and nobody is left blocked.
-  void send_failure(Process& p, int k) {
-    std::vector<Process::Body> branches;
-    for (const Port& port : out_ports_)
-      if (!takers(port, k).empty())
-        branches.push_back([&port](Process& q) {
-          q.out(*port.channel, {kHeaderBytes, PivotMessage::failed(), kFailLabel});
-        });
-    par(p, branches);
-  }
-
-  // The pivot row and the rows of step k down every channel at once (one branch per channel).
-  void hand_out(Process& p, int k, const PivotMessage& pivot, const Rows<C>& m) {
-    std::vector<Process::Body> branches;
-    for (const Port& port : out_ports_) {
-      if (takers(port, k).empty()) continue;
-      branches.push_back([this, k, &port, &pivot, &m](Process& q) {
-        const std::size_t extra = k == 0 && settings.rule.growth_check() ? 1 : 0;  // the scale
-        q.out(*port.channel, {reals(pivot.row.size() + extra), pivot, "pivot row"});
-        for (std::size_t i : relay_rows(shape, port.served, k))
-          q.out(*port.channel, {reals(m[i].size()), RowMessage{i, m[i]}, "row"});
-      });
-    }
-    par(p, branches);
-  }
-
-  std::vector<int> takers(const Port& port, int k) const {
-    std::vector<int> out;
-    for (int e : port.served)
-      if (shape.participates(k, e)) out.push_back(e);
-    return out;
-  }
-
-  // occam PAR; a single branch runs in place.
-  static void par(Process& p, const std::vector<Process::Body>& branches) {
-    if (branches.size() == 1) return branches.front()(p);
-    p.par(branches);
-  }
-
-  // ---- level 2 ----
-  void level2(Process& p, int e) {
-    network::Channel& in = *e_in_[std::size_t(e)];
-    network::Channel& out = *e_out_[std::size_t(e)];
-    for (int k = 0; k < n(); ++k) {
-      if (!shape.participates(k, e)) continue;
-      t800::Message pivot_message = p.in(in);
-      const auto& pivot = std::any_cast<const PivotMessage&>(pivot_message.payload);
-      const std::vector<std::size_t> rows = shape.rows_for(k, e);
-      if (!pivot.ok) {
-        // E1 tells L3; one behind the fan-in tells the fan-in, which waits for its rows.
-        if (e == 0 || e_behind_fan_in_[std::size_t(e)]) p.out(out, pivot_message);
-        return;
-      }
-      std::vector<t800::Message> first(1);
-      if (e == 0) {
-        // E1 forwards the pivot row to L3 while it takes its first row.
-        std::vector<Process::Body> branches{[&](Process& q) { q.out(out, pivot_message); }};
-        if (!rows.empty()) branches.push_back([&](Process& q) { first[0] = q.in(in); });
-        par(p, branches);
-      }
-      for (std::size_t r = 0; r < rows.size(); ++r) {
-        t800::Message message = (r == 0 && e == 0) ? std::move(first[0]) : p.in(in);
-        const auto& row = std::any_cast<const RowMessage&>(message.payload);
-        Row<C> done = run_piece(p, "eliminate",
-                                [&] { return elimination::eliminate(row.values, pivot.row); });
-        p.out(out, {reals(done.size()), RowMessage{row.index, std::move(done)}, "row"});
-      }
-    }
-  }
-
-  // ---- level 3 ----
-  void level3(Process& p) {
-    C bound = C(0);
-    bool unstable = false;
-    for (int k = 0; k < n(); ++k) {
-      auto pivot = std::any_cast<PivotMessage>(p.in(*e_out_[0]).payload);
-      if (!pivot.ok) {
-        p.out(*to_l4_, {kHeaderBytes, pivot, kFailLabel});
-        return;
-      }
-      if (k == 0 && settings.rule.growth_check())
-        bound = run_piece(p, "bound",
-                          [&] { return elimination::growth_bound(pivot.scale, settings.rule); });
-      const std::size_t r = static_cast<std::size_t>(n() - 1 - k);
-      Rows<C> rows(r);
-      collect(p, k, pivot, unstable, rows);
-      if (r == 0) continue;
-      const auto check = run_piece(
-          p, "check", [&] { return elimination::check_step(rows, bound, settings.rule); });
-      largest_ = std::max(largest_, elimination::largest_magnitude(rows));  // diagnostic only
-      if (check.status == Status::non_finite) {
-        fail(k, Status::non_finite,
-             "level 3: a non-finite value in row " + std::to_string(check.row + 1) + " of step " +
-                 std::to_string(k));
-        p.out(*back_, {kHeaderBytes, ReturnedRow{false, {}}, kFailLabel});
-        continue;  // L1 now stops everybody; E1's failed pivot row ends this loop
-      }
-      if (check.status == Status::unstable && !unstable) {
-        unstable = true;
-        first_unstable_ = k;
-      }
-      for (Row<C>& row : rows)
-        p.out(*back_, {reals(row.size()), ReturnedRow{true, std::move(row)}, "reduced row"});
-    }
-  }
-
-  // One step's rows from every level-2 processor (their order on the wire is known), while the
-  // pivot row goes on to L4.
-  void collect(Process& p, int k, PivotMessage& pivot, bool unstable, Rows<C>& rows) {
-    pivot.unstable = unstable;
-    std::vector<Process::Body> branches{[&](Process& q) {
-      q.out(*to_l4_, {reals(pivot.row.size()), pivot, "U row"});
-    }};
-    std::vector<int> arrived(rows.size(), 0);
-    for (const Port& port : in_ports_) {
-      const std::vector<std::size_t> expected = relay_rows(shape, port.served, k);
-      if (expected.empty()) continue;
-      branches.push_back([&port, expected, &rows, &arrived](Process& q) {
-        for (std::size_t count = expected.size(); count > 0; --count) {
-          auto row = std::any_cast<RowMessage>(q.in(*port.channel).payload);
-          rows[row.index - 1] = std::move(row.values);
-          ++arrived[row.index - 1];
-        }
-      });
-    }
-    par(p, branches);
-    for (int a : arrived)
-      if (a != 1) throw std::logic_error("elimination pipeline: a row did not arrive exactly once");
-  }
-
-  // ---- level 4 ----
-  void level4(Process& p) {
-    Rows<C> upper;
-    bool unstable = false;
-    for (int k = 0; k < n(); ++k) {
-      auto pivot = std::any_cast<PivotMessage>(p.in(*to_l4_).payload);
-      if (!pivot.ok) {
-        outcome.end_us = p.now_us();
-        return;
-      }
-      unstable = unstable || pivot.unstable;
-      upper.push_back(std::move(pivot.row));
-    }
-    const Row<C> x =
-        run_piece(p, "back substitution", [&] { return elimination::back_substitute(upper); });
-    outcome.end_us = p.now_us();
-    finish(x, unstable);
-  }
-
-  void finish(const Row<C>& x, bool unstable) {
-    for (const C& v : x) {
-      if (elimination::is_finite(v)) continue;
-      fail(n(), Status::non_finite, "level 4: back substitution overflowed");
-      return;
-    }
-    for (const C& v : x) outcome.qdd.push_back(static_cast<double>(v.value()));
-    if (input_scale_ > 0 && largest_ > input_scale_)
-      outcome.growth = static_cast<double>(largest_ / input_scale_);
-    if (unstable)
-      fail(first_unstable_, Status::unstable,
-           "level 3: pivot growth above the limit from step " + std::to_string(first_unstable_));
-  }
-
-  elimination::LinearSystem<C> system_;
-  network::Channel* host_in_ = nullptr;
-  network::Channel* back_ = nullptr;
-  network::Channel* to_l4_ = nullptr;
-  std::vector<network::Channel*> e_in_, e_out_;  // each level-2 processor's input and output
-  std::vector<bool> e_behind_fan_in_;
-  std::vector<Port> out_ports_, in_ports_;  // L1's output channels, L3's input channels
-  long double input_scale_;                 // max |a_ij| of the input (diagnostic)
-  long double largest_ = 0;                 // max |a(k)_ij| seen by L3 (diagnostic)
-  int first_unstable_ = -1;
+  elimination::LinearSystem<T> system_;
+  PipelineProgram<T> program_;
 };
 
 }  // namespace
@@ -467,7 +66,7 @@ EliminationPipeline::EliminationPipeline(const PipelineSettings& settings,
                                 " level-2 processors (E1, E2, ...); use configs/topologies/"
                                 "elimination-m" +
                                 std::to_string(settings.m) + ".toml");
-  const Nodes nodes = find_nodes(topology, s.m);
+  const PipelineNodes nodes = find_pipeline_nodes(topology, s.m);
   if (s.precision == t800::Precision::real64)
     engine_ = std::make_unique<EngineT<double>>(s, system, nodes);
   else
@@ -477,24 +76,24 @@ EliminationPipeline::EliminationPipeline(const PipelineSettings& settings,
 EliminationPipeline::~EliminationPipeline() = default;
 
 void EliminationPipeline::build(network::Machine& machine) {
-  if (machine.options().precision != engine_->settings.precision)
+  if (machine.options().precision != engine_->settings().precision)
     throw std::invalid_argument("elimination: the machine's precision differs from the workload's");
   engine_->build(machine);
 }
 
 const PipelineOutcome& EliminationPipeline::outcome() const {
-  return engine_->outcome;
+  return engine_->outcome();
 }
 int EliminationPipeline::m() const {
-  return engine_->settings.m;
+  return engine_->settings().m;
 }
 
 ResultValue EliminationPipeline::results(const network::Machine& machine) const {
-  const PipelineOutcome& o = engine_->outcome;
-  const PipelineSettings& s = engine_->settings;
+  const PipelineOutcome& o = engine_->outcome();
+  const PipelineSettings& s = engine_->settings();
   ResultValue r;
   r.set("m", s.m);
-  r.set("n", engine_->shape.n);
+  r.set("n", engine_->shape().n);
   r.set("precision", std::string(t800::to_string(s.precision)));
   r.set("pivoting", elimination::to_string(s.rule.pivoting));
   r.set("pivot_threshold", s.rule.threshold);

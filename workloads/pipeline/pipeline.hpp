@@ -9,6 +9,8 @@
 //            how much the pivots have grown), rebuilds the reduced matrix and returns it to L1;
 //            passes each pivot row (a row of U) on to L4;
 //   L4       back substitution: q̈.
+// The levels are PipelineProgram (pipeline_program.hpp) serving one system from the host; the
+// trajectory workload runs the same program for every evaluation.
 // Every level calls the same pieces as the sequential solver (workloads/elimination/gauss.hpp), so
 // q̈ is bit-identical to elimination::solve at the same precision and pivoting. Costs come from the
 // pieces' counted work through the machine's CostModel; message sizes are the REAL32/REAL64 rows
@@ -27,29 +29,10 @@
 #include "t800/cost_model.hpp"
 #include "workloads/elimination/gauss.hpp"
 #include "workloads/elimination/system.hpp"
+#include "workloads/pipeline/pipeline_program.hpp"
 #include "workloads/run/workload.hpp"
 
 namespace workloads {
-
-struct PipelineSettings {
-  int m = 0;  // level-2 processors used, E1..Em; 0 = every E<i> the topology has
-  t800::Precision precision = t800::Precision::real64;
-  elimination::PivotRule rule;
-};
-
-// What one run produced; read it after Machine::run().
-struct PipelineOutcome {
-  elimination::Status status = elimination::Status::ok;
-  int failed_step = -1;
-  std::string failure;          // which level saw what, for the report; empty when solved
-  std::vector<double> qdd;      // the solution, exactly as computed (float widens exactly)
-  std::vector<int> pivot_rows;  // original row of each step's pivot
-  int interchanges = 0;
-  double growth = 1;
-  double input_start_us = 0, start_us = 0, end_us = 0;
-  std::vector<double> step_start_us;  // when L1 began each step's pivot search
-  double tp_us() const { return end_us - start_us; }
-};
 
 class EliminationPipeline : public Workload {
  public:

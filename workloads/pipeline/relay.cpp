@@ -13,6 +13,10 @@ bool failed(const t800::Message& m) {
   return m.label == kFailLabel;
 }
 
+bool more(const Relay& relay, int round) {
+  return relay.rounds == Relay::kUntilStopped || round < relay.rounds;
+}
+
 std::size_t slot(const Relay& relay, int e) {
   return std::size_t(std::find(relay.served.begin(), relay.served.end(), e) - relay.served.begin());
 }
@@ -50,30 +54,32 @@ void spawn_fan_out(network::Machine& machine, const PipelineShape& shape, const 
   const auto inner = internal_channels(machine, relay, "X->");
   const auto high = t800::Priority::high;
   machine.spawn(relay.node, "fan-out in", high, [shape, relay, inner](Process& p) {
-    for (int k = 0; k < shape.n; ++k) {
-      const std::vector<int> takers = relay_participants(shape, relay, k);
-      if (takers.empty()) continue;
-      const t800::Message pivot = p.in(*relay.inputs.front());
-      for (int e : takers) p.out(*inner[slot(relay, e)], pivot);
-      if (failed(pivot)) return;
-      for (std::size_t i : relay_rows(shape, relay.served, k))
-        p.out(*inner[slot(relay, shape.owner(i))], p.in(*relay.inputs.front()));
-    }
+    for (int r = 0; more(relay, r); ++r)
+      for (int k = 0; k < shape.n; ++k) {
+        const std::vector<int> takers = relay_participants(shape, relay, k);
+        if (takers.empty()) continue;
+        const t800::Message pivot = p.in(*relay.inputs.front());
+        for (int e : takers) p.out(*inner[slot(relay, e)], pivot);
+        if (failed(pivot)) return;
+        for (std::size_t i : relay_rows(shape, relay.served, k))
+          p.out(*inner[slot(relay, shape.owner(i))], p.in(*relay.inputs.front()));
+      }
   });
   for (int e : relay.served) {
     machine.spawn(relay.node, "fan-out E" + std::to_string(e + 1), high,
                   [shape, relay, inner, e](Process& p) {
                     network::Channel& in = *inner[slot(relay, e)];
                     network::Channel& out = *relay.outputs[slot(relay, e)];
-                    for (int k = 0; k < shape.n; ++k) {
-                      if (!shape.participates(k, e)) continue;
-                      t800::Message pivot = p.in(in);
-                      const bool stop = failed(pivot);
-                      p.out(out, std::move(pivot));
-                      if (stop) return;
-                      for (std::size_t count = shape.rows_for(k, e).size(); count > 0; --count)
-                        p.out(out, p.in(in));
-                    }
+                    for (int r = 0; more(relay, r); ++r)
+                      for (int k = 0; k < shape.n; ++k) {
+                        if (!shape.participates(k, e)) continue;
+                        t800::Message pivot = p.in(in);
+                        const bool stop = failed(pivot);
+                        p.out(out, std::move(pivot));
+                        if (stop) return;
+                        for (std::size_t count = shape.rows_for(k, e).size(); count > 0; --count)
+                          p.out(out, p.in(in));
+                      }
                   });
   }
 }
@@ -88,30 +94,32 @@ void spawn_fan_in(network::Machine& machine, const PipelineShape& shape, const R
                   [shape, relay, inner, e](Process& p) {
                     network::Channel& in = *relay.inputs[slot(relay, e)];
                     network::Channel& out = *inner[slot(relay, e)];
-                    for (int k = 0; k < shape.n; ++k) {
-                      for (std::size_t count = shape.rows_for(k, e).size(); count > 0; --count) {
-                        t800::Message m = p.in(in);
-                        const bool stop = failed(m);
-                        p.out(out, std::move(m));
-                        if (stop) return;
+                    for (int r = 0; more(relay, r); ++r)
+                      for (int k = 0; k < shape.n; ++k) {
+                        for (std::size_t count = shape.rows_for(k, e).size(); count > 0; --count) {
+                          t800::Message m = p.in(in);
+                          const bool stop = failed(m);
+                          p.out(out, std::move(m));
+                          if (stop) return;
+                        }
                       }
-                    }
                   });
   }
   machine.spawn(relay.node, "fan-in out", high, [shape, relay, inner](Process& p) {
-    for (int k = 0; k < shape.n; ++k) {
-      for (std::size_t i : relay_rows(shape, relay.served, k)) {
-        t800::Message m = p.in(*inner[slot(relay, shape.owner(i))]);
-        if (!failed(m)) {
-          p.out(*relay.outputs.front(), std::move(m));
-          continue;
+    for (int r = 0; more(relay, r); ++r)
+      for (int k = 0; k < shape.n; ++k) {
+        for (std::size_t i : relay_rows(shape, relay.served, k)) {
+          t800::Message m = p.in(*inner[slot(relay, shape.owner(i))]);
+          if (!failed(m)) {
+            p.out(*relay.outputs.front(), std::move(m));
+            continue;
+          }
+          // Every other processor with rows in this step sends its own failure message: take them.
+          for (int e : relay.served)
+            if (e != shape.owner(i) && !shape.rows_for(k, e).empty()) p.in(*inner[slot(relay, e)]);
+          return;
         }
-        // Every other processor with rows in this step sends its own failure message: take them.
-        for (int e : relay.served)
-          if (e != shape.owner(i) && !shape.rows_for(k, e).empty()) p.in(*inner[slot(relay, e)]);
-        return;
       }
-    }
   });
 }
 

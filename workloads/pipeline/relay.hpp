@@ -4,7 +4,8 @@
 // process and one output process per link, joined by internal channels, so that X takes the next
 // row from L1 while it is still sending the previous one on. X receives each step's pivot row once
 // and copies it to every processor it serves. They know the pipeline's schedule (schedule.hpp),
-// so no routing header is needed; they stop on a failure message.
+// so no routing header is needed; they stop on a failure message (which also ends a pipeline that
+// serves until finish, pipeline_program.hpp).
 #pragma once
 
 #include <string>
@@ -19,7 +20,9 @@ namespace workloads {
 constexpr const char* kFailLabel = "fail";
 
 struct Relay {
+  static constexpr int kUntilStopped = -1;
   int node = -1;
+  int rounds = 1;           // systems it carries; kUntilStopped: until a stop (fail) message
   std::vector<int> served;  // level-2 processors (0-based) behind this relay, ascending
   // Fan-out: one input (from L1) and one output per served processor. Fan-in: the reverse.
   std::vector<network::Channel*> inputs, outputs;

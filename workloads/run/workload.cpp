@@ -7,6 +7,7 @@
 #include "workloads/farm/dynamics_farm.hpp"
 #include "workloads/links/link_workloads.hpp"
 #include "workloads/pipeline/pipeline.hpp"
+#include "workloads/trajectory/trajectory.hpp"
 
 namespace workloads {
 
@@ -19,6 +20,7 @@ const std::map<std::string, Factory>& factories() {
       {"link-stream", make_link_stream},
       {"dynamics-farm", make_dynamics_farm},
       {"elimination", make_elimination},
+      {"trajectory", make_trajectory},
   };
   return f;
 }

@@ -1,0 +1,89 @@
+// The Fig. 7 Gaussian-elimination pipeline as a program that serves solves, like FarmProgram: a
+// client process (the host for Table 6, the farm's master in a trajectory) sends one system at a
+// time to L1 and, when the program serves until finish(), gets q̈ back from L4; the levels loop
+// over rounds until the client calls finish(). The levels, their channels and the relays are
+// described in pipeline.hpp.
+//
+// A failed round (no usable pivot, a non-finite value) stops every level, as in the one-shot
+// pipeline: the client gets the failure and must not send again (finish() is then a no-op).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "network/machine.hpp"
+#include "workloads/elimination/gauss.hpp"
+#include "workloads/elimination/system.hpp"
+#include "workloads/pipeline/schedule.hpp"
+
+namespace workloads {
+
+struct PipelineSettings {
+  int m = 0;  // level-2 processors used, E1..Em; 0 = every E<i> the topology has
+  t800::Precision precision = t800::Precision::real64;
+  elimination::PivotRule rule;
+};
+
+// What one round produced, as the levels saw it.
+struct PipelineOutcome {
+  elimination::Status status = elimination::Status::ok;
+  int failed_step = -1;
+  std::string failure;          // which level saw what, for the report; empty when solved
+  std::vector<double> qdd;      // the solution, exactly as computed (float widens exactly)
+  std::vector<int> pivot_rows;  // original row of each step's pivot
+  int interchanges = 0;
+  double growth = 1;
+  double input_start_us = 0, start_us = 0, end_us = 0;
+  double returned_us = 0;             // the client has q̈ (serve = until_finish only)
+  std::vector<double> step_start_us;  // when L1 began each step's pivot search
+  double tp_us() const { return end_us - start_us; }
+};
+
+// The processors of the pipeline, found by name: L1, E1..Em, L3, L4.
+struct PipelineNodes {
+  int l1 = -1, l3 = -1, l4 = -1;
+  std::vector<int> e;
+};
+// The number of consecutive level-2 processors E1, E2, ... the topology has.
+int level2_count(const network::Topology& topology);
+// Throws std::invalid_argument naming the missing processor.
+PipelineNodes find_pipeline_nodes(const network::Topology& topology, int m);
+
+// once: one system, q̈ stays on L4 (Table 6: nothing moves after Tp); until_finish: q̈ goes back
+// to the client every round, and the levels loop until finish().
+enum class Serve { once, until_finish };
+
+template <class S>
+class PipelineProgram {
+ public:
+  PipelineProgram(const PipelineSettings& settings, const PipelineNodes& nodes, int n);
+  ~PipelineProgram();
+  PipelineProgram(const PipelineProgram&) = delete;
+  PipelineProgram& operator=(const PipelineProgram&) = delete;
+
+  // Before the run: declares the channels (client -> L1, and L4 -> client when serving until
+  // finish), spawns the relays and the four levels.
+  void build(network::Machine& machine, int client, Serve serve);
+  // From the client's process: sends the system to L1 (its REAL values) and starts a round.
+  void send(network::Process& client, const elimination::LinearSystem<S>& system);
+  // send(), then waits for q̈ from L4 (Serve::until_finish).
+  const PipelineOutcome& solve(network::Process& client,
+                               const elimination::LinearSystem<S>& system);
+  // From the client's process after the last solve: every level ends.
+  void finish(network::Process& client);
+
+  const PipelineOutcome& outcome() const;
+  const PipelineSettings& settings() const;
+  const PipelineShape& shape() const;
+
+  class Levels;
+
+ private:
+  std::unique_ptr<Levels> levels_;  // the processes' state (pipeline_program.cpp)
+};
+
+extern template class PipelineProgram<float>;
+extern template class PipelineProgram<double>;
+
+}  // namespace workloads

@@ -1,0 +1,398 @@
+#include "workloads/trajectory/trajectory.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+
+#include "workloads/dynamics/counted.hpp"
+#include "workloads/farm/farm_program.hpp"
+#include "workloads/integration/integrators.hpp"
+#include "workloads/integration/torque.hpp"
+#include "workloads/pipeline/pipeline_program.hpp"
+#include "workloads/run/operation_mix.hpp"
+
+namespace workloads {
+
+namespace {
+
+using dynamics::JointVector;
+using network::Process;
+
+struct TrajectorySettings {
+  integration::Method method = integration::Method::rk4;
+  double dt = 1e-3;
+  int steps = 100;
+  bool stop_at_limits = false;
+  std::string torque = "zero";  // zero | csv | pd
+  std::optional<integration::TorqueTable> table;
+  integration::PdGains pd;
+  JointVector q0 = JointVector::Zero(), qd0 = JointVector::Zero();
+  std::string output_csv;
+  FarmSettings farm;
+  PipelineSettings pipeline;
+};
+
+JointVector joint_vector(const Params& p, const std::string& name, bool broadcast = false) {
+  const std::vector<double>& v = p.real_list(name);
+  const bool one = broadcast && v.size() == 1;
+  if (v.size() != dynamics::kJoints && !one)
+    throw std::invalid_argument(
+        "trajectory: workload." + name + " needs " + std::to_string(dynamics::kJoints) + " values" +
+        (broadcast ? " (or one for every joint)" : "") + ", got " + std::to_string(v.size()));
+  JointVector out;
+  for (int i = 0; i < dynamics::kJoints; ++i) {
+    out(i) = v[one ? 0 : std::size_t(i)];
+    if (!std::isfinite(out(i)))
+      throw std::invalid_argument("trajectory: workload." + name + " has a non-finite value");
+  }
+  return out;
+}
+
+std::optional<integration::TorqueTable> torque_table(const Params& p) {
+  if (p.text("torque") != "csv") return std::nullopt;
+  if (p.text("torque_csv").empty())
+    throw std::invalid_argument("trajectory: workload.torque = \"csv\" needs workload.torque_csv");
+  const auto how = p.text("interpolation") == "hold" ? integration::TorqueInterpolation::hold
+                                                     : integration::TorqueInterpolation::linear;
+  return integration::TorqueTable::load(p.text("torque_csv"), how);
+}
+
+PipelineSettings pipeline_settings(const Params& p) {
+  PipelineSettings s;
+  s.m = int(p.integer("m"));
+  s.precision = *t800::parse_precision(p.text("precision"));
+  s.rule.pivoting = *elimination::parse_pivoting(p.text("pivoting"));
+  s.rule.threshold = p.real("pivot_threshold");
+  return s;
+}
+
+TrajectorySettings settings_from(const Params& p) {
+  TrajectorySettings s;
+  s.method = *integration::parse_method(p.text("integrator"));
+  s.dt = p.real("dt");
+  s.steps = int(p.integer("steps"));
+  s.stop_at_limits = p.flag("stop_at_limits");
+  s.torque = p.text("torque");
+  s.table = torque_table(p);
+  s.pd = {joint_vector(p, "kp", true), joint_vector(p, "kd", true), joint_vector(p, "target")};
+  s.q0 = joint_vector(p, "q");
+  s.qd0 = joint_vector(p, "qd");
+  s.output_csv = p.text("output_csv");
+  s.farm.variant = *dynamics::parse_model_variant(p.text("model"));
+  s.farm.schedule = "static";
+  s.pipeline = pipeline_settings(p);
+  return s;
+}
+
+// The farm's master is the processor wired to the host; its workers are the P<i> (the pipeline's
+// processors have the names PipelineNodes looks for).
+int master_of(const network::Topology& t) {
+  if (t.host_processor() < 0)
+    throw std::invalid_argument("trajectory: the farm's master must be wired to the host");
+  return t.host_processor();
+}
+
+std::vector<int> farm_workers(const network::Topology& t) {
+  std::vector<int> workers;
+  for (int i = 0; i < int(t.processors.size()); ++i) {
+    const std::string& name = t.processors[std::size_t(i)].name;
+    if (i != t.host_processor() && name.size() > 1 && name[0] == 'P') workers.push_back(i);
+  }
+  return workers;
+}
+
+PipelineNodes pipeline_nodes(const network::Topology& t, int m) {
+  const int available = level2_count(t);
+  if (m < 1 || m > available)
+    throw std::invalid_argument("trajectory: workload.m = " + std::to_string(m) +
+                                " but the topology " + t.name + " has " +
+                                std::to_string(available) + " level-2 processors (E1, E2, ...)");
+  return find_pipeline_nodes(t, m);
+}
+
+struct StepTimes {
+  double step_us = 0, dynamics_us = 0, solve_us = 0, integration_us = 0, communication_us = 0;
+};
+
+struct StepRecord {
+  double t = 0;
+  JointVector q, qd, tau;
+  StepTimes times;  // of the step that starts here (zero on the last row)
+};
+
+struct LimitViolation {
+  int joint = 0;  // 1-based
+  int step = 0;   // the step after which the joint was first outside (1-based)
+  double value = 0;
+};
+
+// A failed solve ends the run; the levels have stopped already.
+struct SolveFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+template <class S>
+class Trajectory : public Workload {
+  using C = dynamics::Counted<S>;
+  using Vec = dynamics::JointVectorT<S>;
+
+ public:
+  Trajectory(const WorkloadContext& c, TrajectorySettings s)
+      : model_(require_robot(c)),
+        s_(std::move(s)),
+        master_(master_of(c.topology)),
+        farm_(model_, s_.farm, master_, farm_workers(c.topology)),
+        pipeline_(s_.pipeline, pipeline_nodes(c.topology, s_.pipeline.m), dynamics::kJoints) {
+    if (!(s_.dt > 0)) throw std::invalid_argument("trajectory: workload.dt must be positive");
+  }
+
+  void build(network::Machine& m) override {
+    farm_.build(m);
+    pipeline_.build(m, master_, Serve::until_finish);
+    integrator_mix_ = to_operation_mix(integrator_ops());
+    auto& state = m.channel("state", network::Machine::kHost, master_);
+    m.spawn(network::Machine::kHost, "host", t800::Priority::low, [&state](Process& p) {
+      p.out(state, {2 * dynamics::kJoints * std::int64_t(sizeof(S)), {}, "initial state"});
+    });
+    m.spawn(master_, "master", t800::Priority::low, [this, &state](Process& p) {
+      p.in(state);
+      run(p);
+    });
+  }
+
+  ResultValue results(const network::Machine&) const override;
+
+ private:
+  // The integrator's arithmetic does not depend on the data: count one step with an f that costs
+  // nothing.
+  dynamics::OpCounts integrator_ops() const {
+    dynamics::OpTally tally;
+    const integration::State<C> x;
+    const dynamics::JointVectorT<C> zero = dynamics::JointVectorT<C>::Zero();
+    integration::step(s_.method, x, C(S(s_.dt)), [&](const auto&, const auto&) { return zero; });
+    return tally.counts();
+  }
+
+  void run(Process& p) {
+    integration::State<S> x{s_.q0.cast<S>(), s_.qd0.cast<S>()};
+    check_limits(wide(x.q), 0);  // a start outside the limits is reported as step 0
+    try {
+      for (int n = 1; n <= s_.steps; ++n) {
+        const double t = (n - 1) * s_.dt;
+        StepRecord row{t, wide(x.q), wide(x.qd), torque(t, wide(x.q), wide(x.qd)), {}};
+        x = step(p, t, x, row.times);
+        records_.push_back(row);
+        if (!check_limits(wide(x.q), n) && s_.stop_at_limits) break;
+      }
+    } catch (const SolveFailed& e) {
+      failure_ = e.what();
+    }
+    const double t = double(records_.size()) * s_.dt;
+    records_.push_back({t, wide(x.q), wide(x.qd), torque(t, wide(x.q), wide(x.qd)), {}});
+    farm_.finish(p);
+    pipeline_.finish(p);
+  }
+
+  static JointVector wide(const Vec& v) { return v.template cast<double>(); }
+
+  integration::State<S> step(Process& p, double t, const integration::State<S>& x,
+                             StepTimes& times) {
+    const double start = p.now_us();
+    const double* offsets = integration::stage_offsets(s_.method);
+    int stage = 0;
+    auto f = [&](const Vec& q, const Vec& qd) {
+      return acceleration(p, t + offsets[stage++] * s_.dt, q, qd, times);
+    };
+    const integration::State<S> next = integration::step(s_.method, x, S(s_.dt), f);
+    const double before = p.now_us();
+    p.compute(integrator_mix_, "integrate");
+    times.integration_us += p.now_us() - before;
+    times.step_us = p.now_us() - start;
+    times.communication_us =
+        times.step_us - times.dynamics_us - times.solve_us - times.integration_us;
+    return next;
+  }
+
+  // One evaluation: τ, the farm's D, c, h, the right-hand side, the pipeline's q̈.
+  Vec acceleration(Process& p, double t, const Vec& q, const Vec& qd, StepTimes& times) {
+    const FarmRound round = farm_.evaluate(p, wide(q), wide(qd), data_);
+    times.dynamics_us += round.end_us - round.start_us;
+    dynamics::OpCounts ops;
+    Vec rhs;
+    {
+      dynamics::OpTally tally;  // τ and τ − c − h; ends before compute() lets others run
+      const dynamics::JointVectorT<C> tau = counted_torque(t, wide(q), wide(qd));
+      const dynamics::JointVectorT<C> r =
+          tau - data_.c.template cast<C>() - data_.h.template cast<C>();
+      for (int i = 0; i < dynamics::kJoints; ++i) rhs(i) = r(i).value();
+      ops = tally.counts();
+    }
+    const double before = p.now_us();
+    p.compute(to_operation_mix(ops), "right-hand side");
+    times.integration_us += p.now_us() - before;
+    return solve(p, rhs, times);
+  }
+
+  Vec solve(Process& p, const Vec& rhs, StepTimes& times) {
+    const PipelineOutcome& o = pipeline_.solve(p, elimination::from_eigen<S>(data_.D, rhs));
+    if (!elimination::solved(o.status))
+      throw SolveFailed("the pipeline failed at t = " + std::to_string(p.now_us()) +
+                        " us: " + o.failure);
+    times.solve_us += o.tp_us();
+    Vec qdd;
+    for (int i = 0; i < dynamics::kJoints; ++i) qdd(i) = S(o.qdd[std::size_t(i)]);
+    return qdd;
+  }
+
+  // τ rounded to S, as elimination::dynamics_system rounds it; the PD law counts its operations.
+  dynamics::JointVectorT<C> counted_torque(double t, const JointVector& q,
+                                           const JointVector& qd) const {
+    if (s_.torque != "pd") return torque(t, q, qd).template cast<S>().template cast<C>();
+    using D = dynamics::Counted<double>;
+    const dynamics::JointVectorT<D> tau =
+        integration::pd_torque<D>(s_.pd, q.template cast<D>(), qd.template cast<D>());
+    dynamics::JointVectorT<C> out;
+    for (int i = 0; i < dynamics::kJoints; ++i) out(i) = C(S(tau(i).value()));
+    return out;
+  }
+
+  JointVector torque(double t, const JointVector& q, const JointVector& qd) const {
+    if (s_.torque == "pd") return integration::pd_torque<double>(s_.pd, q, qd);
+    if (s_.torque == "csv") return s_.table->at(t);
+    return JointVector::Zero();
+  }
+
+  // Records each joint's exit from its limits (not every step it stays out); true when inside.
+  bool check_limits(const JointVector& q, int n) {
+    bool inside = true;
+    for (int i = 0; i < dynamics::kJoints; ++i) {
+      const dynamics::JointLimits& l = model_.joints[std::size_t(i)].limits;
+      const bool out = !(q(i) >= l.min && q(i) <= l.max);
+      if (out && !outside_[std::size_t(i)]) violations_.push_back({i + 1, n, q(i)});
+      outside_[std::size_t(i)] = out;
+      inside = inside && !out;
+    }
+    if (!inside) ++steps_outside_;
+    return inside;
+  }
+
+  void write_csv() const;
+  ResultValue split(const std::vector<StepRecord>& steps) const;
+
+  const dynamics::RobotModel& model_;
+  TrajectorySettings s_;
+  int master_;
+  FarmProgram<S> farm_;
+  PipelineProgram<S> pipeline_;
+  t800::OperationMix integrator_mix_;
+  dynamics::DynamicsData<S> data_;
+  std::vector<StepRecord> records_;  // one per step, and the final state
+  std::vector<LimitViolation> violations_;
+  std::array<bool, dynamics::kJoints> outside_{};
+  int steps_outside_ = 0;
+  std::string failure_;
+};
+
+ResultValue joint_values(const JointVector& v) {
+  ResultValue out = ResultValue::list();
+  for (int i = 0; i < dynamics::kJoints; ++i) out.push(v(i));
+  return out;
+}
+
+// The mean of each part of the step time, and the largest step.
+template <class S>
+ResultValue Trajectory<S>::split(const std::vector<StepRecord>& steps) const {
+  StepTimes sum;
+  for (const StepRecord& r : steps) {
+    sum.dynamics_us += r.times.dynamics_us;
+    sum.solve_us += r.times.solve_us;
+    sum.integration_us += r.times.integration_us;
+    sum.communication_us += r.times.communication_us;
+  }
+  const double n = std::max<double>(1, double(steps.size()));
+  ResultValue out;
+  out.set("dynamics_us", sum.dynamics_us / n);
+  out.set("solve_us", sum.solve_us / n);
+  out.set("integration_us", sum.integration_us / n);
+  out.set("communication_us", sum.communication_us / n);
+  return out;
+}
+
+template <class S>
+ResultValue Trajectory<S>::results(const network::Machine&) const {
+  const std::vector<StepRecord> steps(records_.begin(), records_.end() - 1);
+  double total = 0, largest = 0;
+  for (const StepRecord& r : steps) {
+    total += r.times.step_us;
+    largest = std::max(largest, r.times.step_us);
+  }
+  const double mean = steps.empty() ? 0 : total / double(steps.size());
+  ResultValue r;
+  r.set("integrator", integration::to_string(s_.method));
+  r.set("evaluations_per_step", integration::evaluations_per_step(s_.method));
+  r.set("torque", s_.torque);
+  r.set("model", dynamics::to_string(s_.farm.variant));
+  r.set("precision", std::string(t800::to_string(s_.pipeline.precision)));
+  r.set("pivoting", elimination::to_string(s_.pipeline.rule.pivoting));
+  r.set("m", pipeline_.settings().m);
+  r.set("workers", std::int64_t(farm_.workers().size()));
+  r.set("steps", std::int64_t(steps.size()));
+  r.set("steps_requested", s_.steps);
+  r.set("dt", s_.dt);
+  r.set("mean_step_us", mean);
+  r.set("max_step_us", largest);
+  r.set("split_mean_us", split(steps));
+  r.set("real_time_factor", mean / (s_.dt * 1e6));
+  ResultValue exits = ResultValue::list();
+  for (const LimitViolation& v : violations_) {
+    ResultValue e;
+    e.set("joint", v.joint);
+    e.set("step", v.step);
+    e.set("value", v.value);
+    exits.push(e);
+  }
+  r.set("limit_violations", exits);
+  r.set("steps_outside_limits", steps_outside_);
+  if (!failure_.empty()) r.set("failure", failure_);
+  r.set("final_q", joint_values(records_.back().q));
+  r.set("final_qd", joint_values(records_.back().qd));
+  if (!s_.output_csv.empty()) {
+    write_csv();
+    r.set("output_csv", s_.output_csv);
+  }
+  return r;
+}
+
+// t, q, q̇, τ and the step's simulated time and split; the last row is the final state.
+template <class S>
+void Trajectory<S>::write_csv() const {
+  std::ofstream out(s_.output_csv);
+  if (!out) throw std::runtime_error(s_.output_csv + ": cannot write the trajectory");
+  out.precision(17);
+  out << "t";
+  for (const char* name : {"q", "qd", "tau"})
+    for (int i = 1; i <= dynamics::kJoints; ++i) out << ',' << name << i;
+  out << ",step_us,dynamics_us,solve_us,integration_us,communication_us\n";
+  for (const StepRecord& r : records_) {
+    out << r.t;
+    for (const JointVector* v : {&r.q, &r.qd, &r.tau})
+      for (int i = 0; i < dynamics::kJoints; ++i) out << ',' << (*v)(i);
+    const StepTimes& s = r.times;
+    out << ',' << s.step_us << ',' << s.dynamics_us << ',' << s.solve_us << ',' << s.integration_us
+        << ',' << s.communication_us << '\n';
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Workload> make_trajectory(const WorkloadContext& c) {
+  TrajectorySettings s = settings_from(c.params);
+  if (s.pipeline.precision == t800::Precision::real64)
+    return std::make_unique<Trajectory<double>>(c, std::move(s));
+  return std::make_unique<Trajectory<float>>(c, std::move(s));
+}
+
+}  // namespace workloads
