@@ -29,7 +29,13 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
       in.params.set(file, relative_to_scene(file).string());
   if (scene.workload.has("robot")) {
     const std::filesystem::path resolved = relative_to_scene("robot");
-    in.robot = std::make_shared<const dynamics::RobotModel>(load_robot(resolved.string()));
+    try {
+      in.robot = std::make_shared<const dynamics::RobotModel>(load_robot(resolved.string()));
+    } catch (const network::ConfigError& e) {
+      if (e.where().line > 0) throw;  // an error inside the robot file already says where
+      throw network::ConfigError(e.where(), e.message() + " (workload.robot = \"" + scene.workload.text("robot") +
+                                                "\", relative to the scene file " + scene.file + ")");
+    }
   }
   return in;
 }

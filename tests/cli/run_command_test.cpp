@@ -68,3 +68,12 @@ TEST(Help, EveryCommandHasHelp) {
     EXPECT_NE(o.out.find("Usage"), std::string::npos) << cmd << "\n" << o.out;
   }
 }
+
+// `run --help` lists every workload kind and its parameters, from the catalogue.
+TEST(Help, RunListsWorkloadKindsAndParameters) {
+  const auto o = run("run --help");
+  EXPECT_EQ(o.exit_code, 0);
+  for (const char* text : {"pingpong:", "link-stream:", "dynamics-farm:", "elimination:", "trajectory:",
+                           "tp_window = \"farm\"", "bytes = 64"})
+    EXPECT_NE(o.out.find(text), std::string::npos) << text << "\n" << o.out;
+}
