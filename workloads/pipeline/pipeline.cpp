@@ -63,9 +63,13 @@ EliminationPipeline::EliminationPipeline(const PipelineSettings& settings,
     throw std::invalid_argument("elimination: workload.m = " + std::to_string(settings.m) +
                                 " but the topology " + topology.name + " has " +
                                 std::to_string(available) +
-                                " level-2 processors (E1, E2, ...); use configs/topologies/"
-                                "elimination-m" +
-                                std::to_string(settings.m) + ".toml");
+                                " level-2 processors (E1, E2, ...); give workload.m from 1 to " +
+                                std::to_string(available) + ", or a topology with more: " +
+                                (settings.m >= 1 && settings.m <= 5
+                                     ? "--set network.topology=../topologies/elimination-m" +
+                                           std::to_string(settings.m) + ".toml"
+                                     : std::string("topologies ship for m = 1..5 "
+                                                   "(configs/topologies/elimination-m1..m5.toml)")));
   const PipelineNodes nodes = find_pipeline_nodes(topology, s.m);
   if (s.precision == t800::Precision::real64)
     engine_ = std::make_unique<EngineT<double>>(s, system, nodes);
