@@ -74,6 +74,10 @@ const std::vector<WorkloadInfo>& workload_catalog() {
             "growth above which level 3 flags the result unstable; 0 = 1/sqrt(unit roundoff) of the precision "
             "(4096 for REAL32, 9.5e7 for REAL64)",
             0.0, 1e300, {}},
+           {"overlap", T::flag, false,
+            "pipelined steps: level 3 streams each row back to level 1 as it arrives, and level 1 starts the next "
+            "step once it has the rows its pivot choice needs (simple interchange: the first); false = strict steps",
+            {}, {}, {}},
            {"source", T::text, std::string{"arm"},
             "the system: \"arm\" (D q'' = tau - c - h of the robot at q, qd, tau), \"random\" (n x n from "
             "seed) or \"given\" (workload.a, workload.b)",

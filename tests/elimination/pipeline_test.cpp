@@ -23,7 +23,8 @@ struct PipelineRun {
 };
 
 PipelineRun run_pipeline(int m, const elimination::LinearSystem<double>& system,
-                         const elimination::PivotRule& r, t800::Precision precision) {
+                         const elimination::PivotRule& r, t800::Precision precision,
+                         bool overlap = false) {
   const network::Topology topology = network::load_topology(std::string(T800SIM_SOURCE_DIR) + "/" +
                                                             workloads::elimination_topology(m));
   network::MachineOptions options;
@@ -33,6 +34,7 @@ PipelineRun run_pipeline(int m, const elimination::LinearSystem<double>& system,
   settings.m = m;
   settings.precision = precision;
   settings.rule = r;
+  settings.overlap = overlap;
   workloads::EliminationPipeline pipeline(settings, system, topology);
   pipeline.build(machine);
   PipelineRun run;
@@ -46,10 +48,10 @@ PipelineRun run_pipeline(int m, const elimination::LinearSystem<double>& system,
 
 template <class T>
 void expect_same_as_sequential(int m, const elimination::LinearSystem<double>& system,
-                               const elimination::PivotRule& r) {
+                               const elimination::PivotRule& r, bool overlap = false) {
   const auto precision =
       std::is_same_v<T, double> ? t800::Precision::real64 : t800::Precision::real32;
-  const PipelineRun run = run_pipeline(m, system, r, precision);
+  const PipelineRun run = run_pipeline(m, system, r, precision, overlap);
   ASSERT_TRUE(run.blocked.empty())
       << run.blocked.front().process << ": " << run.blocked.front().status;
   const auto data = elimination::convert<T>(system);
@@ -88,6 +90,37 @@ TEST_P(PipelineM, ZeroPivotInterchangeEqualsSequential) {
   expect_same_as_sequential<double>(GetParam(), system, rule(Pivoting::simple));
 }
 
+// Overlap (rows streamed back, the next step started early) changes when, never what: q̈ is still
+// bit-identical, for both precisions and both pivotings.
+TEST_P(PipelineM, OverlapArmReal64SimpleEqualsSequential) {
+  expect_same_as_sequential<double>(GetParam(), reference_system(), rule(Pivoting::simple), true);
+}
+
+TEST_P(PipelineM, OverlapArmReal32SimpleEqualsSequential) {
+  expect_same_as_sequential<float>(GetParam(), reference_system(), rule(Pivoting::simple), true);
+}
+
+// Partial pivoting needs every row before it chooses: level 1 waits for the whole matrix.
+TEST_P(PipelineM, OverlapArmReal64PartialEqualsSequential) {
+  expect_same_as_sequential<double>(GetParam(), reference_system(), rule(Pivoting::partial), true);
+}
+
+TEST_P(PipelineM, OverlapArmReal32PartialEqualsSequential) {
+  expect_same_as_sequential<float>(GetParam(), reference_system(), rule(Pivoting::partial), true);
+}
+
+TEST_P(PipelineM, OverlapRandomPartialWithInterchangesEqualsSequential) {
+  const auto system = elimination::random_system(6, 7);
+  expect_same_as_sequential<float>(GetParam(), system, rule(Pivoting::partial, 0, 1e8), true);
+}
+
+// A zero first row: level 1 waits for the whole reduced matrix before it interchanges.
+TEST_P(PipelineM, OverlapZeroPivotInterchangeEqualsSequential) {
+  auto system = elimination::random_system(6, 3);
+  system.a[0][0] = 0;
+  expect_same_as_sequential<double>(GetParam(), system, rule(Pivoting::simple), true);
+}
+
 // A singular system fails at level 1 in the last step; a NaN fails at level 3 in the first: both
 // are reported and every process ends. (The last column is zero, so the last pivot is an exact
 // zero: a singularity that rounding turns into a tiny pivot is what the growth check is for.)
@@ -111,6 +144,32 @@ TEST_P(PipelineM, NonFiniteIsReportedByLevelThree) {
   EXPECT_TRUE(run.blocked.empty());
   EXPECT_EQ(run.outcome.status, Status::non_finite);
   EXPECT_EQ(run.outcome.failed_step, 0);
+  EXPECT_NE(run.outcome.failure.find("level 3"), std::string::npos) << run.outcome.failure;
+}
+
+// With overlap the rows already in flight are not called back: a NaN is reported by level 3 at
+// the step it appears in, the pipeline drains and gives no q̈; a singular system still stops at
+// level 1 (it waited for every row before it gave up).
+TEST_P(PipelineM, OverlapSingularSystemIsReportedAndNothingDeadlocks) {
+  auto system = elimination::random_system(6, 5);
+  for (auto& row : system.a) row[5] = 0;
+  const PipelineRun run =
+      run_pipeline(GetParam(), system, rule(Pivoting::simple), t800::Precision::real64, true);
+  EXPECT_TRUE(run.blocked.empty());
+  EXPECT_EQ(run.outcome.status, Status::no_pivot);
+  EXPECT_EQ(run.outcome.failed_step, 5);
+  EXPECT_TRUE(run.outcome.qdd.empty());
+}
+
+TEST_P(PipelineM, OverlapNonFiniteIsReportedByLevelThree) {
+  auto system = elimination::random_system(6, 5);
+  system.a[3][2] = std::numeric_limits<double>::quiet_NaN();
+  const PipelineRun run =
+      run_pipeline(GetParam(), system, rule(Pivoting::simple), t800::Precision::real64, true);
+  EXPECT_TRUE(run.blocked.empty());
+  EXPECT_EQ(run.outcome.status, Status::non_finite);
+  EXPECT_EQ(run.outcome.failed_step, 0);
+  EXPECT_TRUE(run.outcome.qdd.empty());
   EXPECT_NE(run.outcome.failure.find("level 3"), std::string::npos) << run.outcome.failure;
 }
 

@@ -76,6 +76,7 @@ std::unique_ptr<Workload> make_elimination(const WorkloadContext& context) {
   s.rule.pivoting = *elimination::parse_pivoting(p.text("pivoting"));
   s.rule.threshold = p.real("pivot_threshold");
   s.rule.growth_limit = growth_limit(p, s.precision);
+  s.overlap = p.flag("overlap");
   return std::make_unique<EliminationPipeline>(s, input_system(context), context.topology);
 }
 

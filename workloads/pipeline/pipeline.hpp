@@ -9,6 +9,8 @@
 //            how much the pivots have grown), rebuilds the reduced matrix and returns it to L1;
 //            passes each pivot row (a row of U) on to L4;
 //   L4       back substitution: q̈.
+// With workload.overlap the steps are pipelined: L3 streams each checked row straight back and L1
+// starts the next step as soon as its pivot choice has the rows it reads (pipeline_program.hpp).
 // The levels are PipelineProgram (pipeline_program.hpp) serving one system from the host; the
 // trajectory workload runs the same program for every evaluation.
 // Every level calls the same pieces as the sequential solver (workloads/elimination/gauss.hpp), so

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <any>
+#include <cmath>
 #include <functional>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+
+#include <systemc>
 
 #include "workloads/pipeline/costs.hpp"
 #include "workloads/pipeline/relay.hpp"
@@ -56,6 +59,21 @@ auto run_piece(Process& p, const char* label, F&& f) {
   return result;
 }
 
+// Memory shared by the PAR branches of one level (L1's, L3's rows): a branch that needs a row
+// another branch has not stored yet gives up the CPU until it has. An occam programmer would put a
+// buffer process in front; here the rows stay where they are, so the wait itself costs nothing.
+struct Shared {
+  sc_core::sc_event changed;
+  template <class Ready>
+  void wait_until(Process& p, Ready ready) {
+    if (ready()) return;
+    p.deschedule();
+    while (!ready()) sc_core::wait(changed);
+    p.reschedule();
+  }
+  void notify() { changed.notify(sc_core::SC_ZERO_TIME); }
+};
+
 }  // namespace
 
 int level2_count(const network::Topology& t) {
@@ -104,6 +122,8 @@ class PipelineProgram<T>::Levels {
   struct ReturnedRow {
     bool ok = true;
     Row<C> values;
+    // Position in the next step's system (with overlap the rows come back as they are ready).
+    std::size_t index = 0;
   };
 
  public:
@@ -112,6 +132,8 @@ class PipelineProgram<T>::Levels {
 
   void build(network::Machine& machine, int client, Serve serve) {
     serve_ = serve;
+    if (settings.overlap && serve != Serve::once)
+      throw std::invalid_argument("elimination pipeline: overlap serves one system only");
     input_ = &machine.channel("system", client, nodes.l1);
     plan_level1_side(machine);
     plan_level3_side(machine);
@@ -259,35 +281,100 @@ class PipelineProgram<T>::Levels {
                         ? run_piece(p, "scale", [&] { return elimination::matrix_scale(m); })
                         : C(0);
     const C limit = run_piece(p, "limit", [&] { return elimination::pivot_limit(scale, rule); });
-    std::vector<int> order(m.size());
+    if (!settings.overlap) return steps(p, std::move(m), scale, limit);
+    // Overlap: a receiver stores the rows L3 streams back while the steps go on.
+    bool go = true;
+    p.par({[&](Process& q) { go = steps(q, std::move(m), scale, limit); },
+           [this](Process& q) { receive_streamed(q); }});
+    return go;
+  }
+
+  // The n steps of one system on L1; false when the pipeline stops.
+  bool steps(Process& p, Rows<C> first, C scale, C limit) {
+    const auto& rule = settings.rule;
+    matrices_.assign(std::size_t(n()), Rows<C>());
+    for (int k = 1; k < n(); ++k) matrices_[std::size_t(k)].resize(std::size_t(n() - k));
+    arrived_.assign(std::size_t(n()), 0);
+    handed_ = 0;
+    l1_stopped_ = false;
+    matrices_[0] = std::move(first);
+    arrived_[0] = n();
+    std::vector<int> order(static_cast<std::size_t>(n()));
     std::iota(order.begin(), order.end(), 0);
     for (int k = 0; k < n(); ++k) {
-      if (k > 0 && !receive_reduced(p, m)) return send_stop(p, k, false);
+      Rows<C>& m = matrices_[std::size_t(k)];
+      if (k > 0 && !next_matrix(p, k, limit)) return stop_level1(p, k);
       outcome.step_start_us.push_back(p.now_us());
       auto step =
           run_piece(p, "pivot", [&] { return elimination::pivot_step(m, order, rule, limit); });
       if (!step.found) {
         fail(k, elimination::pivot_failure(m),
              "level 1: no usable pivot at step " + std::to_string(k));
-        return send_stop(p, k, false);
+        return stop_level1(p, k);
       }
       outcome.pivot_rows.push_back(order[0]);
       if (step.interchanged) ++outcome.interchanges;
       hand_out(p, k,
                PivotMessage{true, false, false, std::move(step.normalised), k == 0 ? scale : C(0)},
                m);
+      ++handed_;
+      l1_.notify();
       order.erase(order.begin());
     }
     return true;
   }
 
+  bool stop_level1(Process& p, int k) {
+    l1_stopped_ = true;
+    l1_.notify();
+    return send_stop(p, k, false);
+  }
+
+  // Step k's matrix: strict, all of it from L3; overlap, the rows the pivot choice reads (simple
+  // interchange with a usable first pivot: that row only; otherwise every row).
+  bool next_matrix(Process& p, int k, C limit) {
+    Rows<C>& m = matrices_[std::size_t(k)];
+    if (!settings.overlap) return receive_reduced(p, std::size_t(n() - k), m);
+    const int rows = n() - k;
+    l1_.wait_until(p, [&] { return !m[0].empty(); });
+    if (settings.rule.pivoting == elimination::Pivoting::partial || !usable(m[0][0], limit))
+      l1_.wait_until(p, [&] { return arrived_[std::size_t(k)] == rows; });
+    return true;
+  }
+
+  // The simple-interchange test of elimination::first_usable_pivot, on values (no work counted:
+  // pivot_step repeats it and is charged for it).
+  bool usable(const C& lead, const C& limit) const {
+    const long double v = elimination::value_of(lead);
+    return settings.rule.threshold > 0 ? std::abs(v) > elimination::value_of(limit) : v != 0;
+  }
+
+  // Overlap: L1's receiver. Step s's rows come back once step s - 1 was handed out, in any order.
+  void receive_streamed(Process& p) {
+    for (int s = 1; s < n(); ++s) {
+      l1_.wait_until(p, [&] { return handed_ >= s || l1_stopped_; });
+      if (handed_ < s) return;
+      Rows<C>& m = matrices_[std::size_t(s)];
+      for (int r = 0; r < n() - s; ++r) {
+        auto row = std::any_cast<ReturnedRow>(p.in(*back_).payload);
+        m[row.index] = std::move(row.values);
+        ++arrived_[std::size_t(s)];
+        l1_.notify();
+      }
+    }
+  }
+
+  // Overlap: step k's row i is in L1's memory (strict: always).
+  void await_row(Process& p, int k, std::size_t i) {
+    if (settings.overlap) l1_.wait_until(p, [&] { return !matrices_[std::size_t(k)][i].empty(); });
+  }
+
   // The n - k rows of the reduced matrix from L3 (the first tells whether the step failed).
-  bool receive_reduced(Process& p, Rows<C>& m) {
-    const std::size_t rows = m.size() - 1;
+  bool receive_reduced(Process& p, std::size_t rows, Rows<C>& m) {
     Rows<C> reduced;
     for (std::size_t i = 0; i < rows; ++i) {
       auto row = std::any_cast<ReturnedRow>(p.in(*back_).payload);
-      if (!row.ok) return false;
+      if (!row.ok) return false;  // strict: rows come in order
       reduced.push_back(std::move(row.values));
     }
     m = std::move(reduced);
@@ -315,8 +402,10 @@ class PipelineProgram<T>::Levels {
       branches.push_back([this, k, &port, &pivot, &m](Process& q) {
         const std::size_t extra = k == 0 && settings.rule.growth_check() ? 1 : 0;  // the scale
         q.out(*port.channel, {reals(pivot.row.size() + extra), pivot, "pivot row"});
-        for (std::size_t i : relay_rows(shape, port.served, k))
+        for (std::size_t i : relay_rows(shape, port.served, k)) {
+          await_row(q, k, i);
           q.out(*port.channel, {reals(m[i].size()), RowMessage{i, m[i]}, "row"});
+        }
       });
     }
     par(p, branches);
@@ -381,6 +470,10 @@ class PipelineProgram<T>::Levels {
         bound = run_piece(p, "bound",
                           [&] { return elimination::growth_bound(pivot.scale, settings.rule); });
       const std::size_t r = static_cast<std::size_t>(n() - 1 - k);
+      if (settings.overlap) {
+        stream(p, k, pivot, bound, unstable);
+        continue;
+      }
       Rows<C> rows(r);
       collect(p, k, pivot, unstable, rows);
       if (r == 0) continue;
@@ -398,8 +491,9 @@ class PipelineProgram<T>::Levels {
         unstable = true;
         first_unstable_ = k;
       }
-      for (Row<C>& row : rows)
-        p.out(*back_, {reals(row.size()), ReturnedRow{true, std::move(row)}, "reduced row"});
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        p.out(*back_,
+              {reals(rows[i].size()), ReturnedRow{true, std::move(rows[i]), i}, "reduced row"});
     }
     return true;
   }
@@ -428,6 +522,55 @@ class PipelineProgram<T>::Levels {
       if (a != 1) throw std::logic_error("elimination pipeline: a row did not arrive exactly once");
   }
 
+  // Overlap: step k's rows go back to L1 one by one as they arrive, each checked on its own (the
+  // same check, row by row). A non-finite row is reported but still sent: the pipeline drains
+  // (L4 then gives no q̈) instead of stopping level 2 mid-step.
+  void stream(Process& p, int k, PivotMessage& pivot, C bound, bool& unstable) {
+    const std::size_t r = static_cast<std::size_t>(n() - 1 - k);
+    Rows<C> rows(r);
+    std::vector<std::size_t> ready;  // indices in arrival order
+    std::vector<Process::Body> branches{[&](Process& q) {
+      pivot.unstable = unstable;
+      q.out(*to_l4_, {reals(pivot.row.size()), pivot, "U row"});
+    }};
+    for (const Port& port : in_ports_) {
+      const std::vector<std::size_t> expected = relay_rows(shape, port.served, k);
+      if (expected.empty()) continue;
+      branches.push_back([this, &port, expected, &rows, &ready](Process& q) {
+        for (std::size_t count = expected.size(); count > 0; --count) {
+          auto row = std::any_cast<RowMessage>(q.in(*port.channel).payload);
+          rows[row.index - 1] = std::move(row.values);
+          ready.push_back(row.index - 1);
+          l3_.notify();
+        }
+      });
+    }
+    if (r > 0)
+      branches.push_back([&](Process& q) {
+        for (std::size_t sent = 0; sent < r; ++sent) {
+          l3_.wait_until(q, [&] { return ready.size() > sent; });
+          forward(q, k, rows[ready[sent]], ready[sent], bound, unstable);
+        }
+      });
+    par(p, branches);
+  }
+
+  void forward(Process& p, int k, Row<C>& row, std::size_t i, C bound, bool& unstable) {
+    const Rows<C> one{row};
+    const auto check =
+        run_piece(p, "check", [&] { return elimination::check_step(one, bound, settings.rule); });
+    largest_ = std::max(largest_, elimination::largest_magnitude(one));  // diagnostic only
+    if (check.status == Status::non_finite)
+      fail(k, Status::non_finite,
+           "level 3: a non-finite value in row " + std::to_string(i + 1) + " of step " +
+               std::to_string(k));
+    if (check.status == Status::unstable && !unstable) {
+      unstable = true;
+      first_unstable_ = k;
+    }
+    p.out(*back_, {reals(row.size()), ReturnedRow{true, std::move(row), i}, "reduced row"});
+  }
+
   // ---- level 4 ----
   bool level4(Process& p) {
     Rows<C> upper;
@@ -452,6 +595,7 @@ class PipelineProgram<T>::Levels {
   }
 
   void record(const Row<C>& x, bool unstable) {
+    if (outcome.status == Status::non_finite) return;  // overlap: L3 saw it, the pipeline drained
     for (const C& v : x) {
       if (elimination::is_finite(v)) continue;
       fail(n(), Status::non_finite, "level 4: back substitution overflowed");
@@ -477,6 +621,12 @@ class PipelineProgram<T>::Levels {
   long double input_scale_ = 0;             // max |a_ij| of the input (diagnostic)
   long double largest_ = 0;                 // max |a(k)_ij| seen by L3 (diagnostic)
   int first_unstable_ = -1;
+  // L1's matrices, one per step (overlap: filled as rows stream back), and what has arrived.
+  std::vector<Rows<C>> matrices_;
+  std::vector<int> arrived_;
+  int handed_ = 0;           // steps L1 has handed out
+  bool l1_stopped_ = false;  // L1 gave up before handing out step handed_
+  Shared l1_, l3_;
 };
 
 template <class T>

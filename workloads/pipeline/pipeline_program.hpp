@@ -23,6 +23,10 @@ struct PipelineSettings {
   int m = 0;  // level-2 processors used, E1..Em; 0 = every E<i> the topology has
   t800::Precision precision = t800::Precision::real64;
   elimination::PivotRule rule;
+  // Pipelined steps (Serve::once only): L3 streams each eliminated row back to L1 as it arrives,
+  // and L1 starts step k + 1 as soon as it has the rows its pivot choice needs. false = strict
+  // steps: L3 returns the whole reduced matrix after checking it.
+  bool overlap = false;
 };
 
 // What one round produced, as the levels saw it.
