@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "network/channel.hpp"
+#include "network/fidelity.hpp"
 #include "network/process.hpp"
 #include "network/topology.hpp"
 #include "t800/cost_model.hpp"
@@ -24,6 +25,7 @@ struct MachineOptions {
   t800::Precision precision = t800::Precision::real64;
   double code_efficiency = 1.0;
   bool keep_intervals = false;  // for traces
+  Fidelity fidelity;
 };
 
 // A process that had not ended when the simulation ran out of events.

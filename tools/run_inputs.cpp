@@ -13,6 +13,7 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
   in.options.link = scene.link;
   in.options.code_efficiency = scene.code_efficiency;
   in.options.keep_intervals = keep_intervals;
+  in.options.fidelity = scene.fidelity;
   // Workloads that compute declare their arithmetic precision; the scene loader has validated the choice.
   if (scene.workload.has("precision"))
     in.options.precision = *t800::parse_precision(scene.workload.text("precision"));

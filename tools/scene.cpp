@@ -18,12 +18,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using network::ConfigError;
-using network::SourcePos;
 using network::join;
 using network::number;
 using network::number_text;
 using network::plural;
 using network::pos_of;
+using network::SourcePos;
 using network::type_name;
 
 std::string article(const std::string& noun) {
@@ -138,6 +138,8 @@ class SceneReader {
   void workload(Scene& scene) const;
   void calibration(Scene& scene) const;
   void calibration_values(const toml::table& t, Scene& scene) const;
+  void fidelity(Scene& scene) const;
+  bool boolean(const toml::table& t, const std::string& key, bool fallback) const;
   workloads::ParamValue param(const workloads::ParamSpec& spec, const toml::node& value,
                               const network::Topology& topology) const;
 
@@ -353,9 +355,10 @@ void SceneReader::workload(Scene& scene) const {
   }
 }
 
-// [calibration] holds the one constant the paper's data may fit, and says how it was fitted: a fitted number
-// without its provenance is not accepted. `file` names the project's calibration file (one source for every
-// scene); a code_efficiency given in the scene itself (or by --set) takes precedence over the file's.
+// [calibration] holds the one constant the paper's data may fit, and says how it was fitted: a
+// fitted number without its provenance is not accepted. `file` names the project's calibration file
+// (one source for every scene); a code_efficiency given in the scene itself (or by --set) takes
+// precedence over the file's.
 void SceneReader::calibration(Scene& scene) const {
   const toml::node* node = root_.get("calibration");
   if (!node) return;
@@ -375,21 +378,60 @@ void SceneReader::calibration(Scene& scene) const {
 void SceneReader::calibration_values(const toml::table& t, Scene& scene) const {
   check_keys(t, {"file", "code_efficiency", "fitted"}, "[calibration]");
   const toml::node* factor = t.get("code_efficiency");
-  if (!factor) fail(t, "[calibration] has no code_efficiency: set code_efficiency = 1.0 (no calibration)");
+  if (!factor)
+    fail(t, "[calibration] has no code_efficiency: set code_efficiency = 1.0 (no calibration)");
   if (!factor->is_number())
     fail(*factor, "'calibration.code_efficiency': expected a number, got " + type_name(*factor));
   scene.code_efficiency = number(*factor);
   if (!(scene.code_efficiency >= 0.1 && scene.code_efficiency <= 100))
-    fail(*factor, "code_efficiency " + number_text(scene.code_efficiency) +
-                      " is outside 0.1 .. 100 (cycles of compiled occam per ideal instruction cycle)");
+    fail(*factor,
+         "code_efficiency " + number_text(scene.code_efficiency) +
+             " is outside 0.1 .. 100 (cycles of compiled occam per ideal instruction cycle)");
   const toml::node* fitted = t.get("fitted");
   if (!fitted && scene.code_efficiency != 1.0)
-    fail(t, "[calibration] sets code_efficiency but not `fitted`: say how and on what data it was fitted");
+    fail(t,
+         "[calibration] sets code_efficiency but not `fitted`: say how and on what data it was "
+         "fitted");
   scene.calibration_note = fitted ? text(*fitted, "calibration.fitted") : std::string();
 }
 
+bool SceneReader::boolean(const toml::table& t, const std::string& key, bool fallback) const {
+  const toml::node* node = t.get(key);
+  if (!node) return fallback;
+  if (!node->is_boolean())
+    fail(*node, "'fidelity." + key + "': expected true or false, got " + type_name(*node));
+  return *node->value<bool>();
+}
+
+// [fidelity]: how much detail to model (t800/fidelity.hpp). Every key is optional; the defaults
+// give the finest level's results.
+void SceneReader::fidelity(Scene& scene) const {
+  const toml::node* node = root_.get("fidelity");
+  if (!node) return;
+  const toml::table& t = table(*node, "fidelity");
+  check_keys(t, {"links", "compute", "skip_numerics", "reuse_steps"}, "[fidelity]");
+  if (const toml::node* links = t.get("links")) {
+    const std::string name = text(*links, "fidelity.links");
+    const auto parsed = t800::parse_link_fidelity(name);
+    if (!parsed)
+      fail(*links, "unknown link fidelity '" + name + "'; valid levels are auto, message, packet");
+    scene.fidelity.links = *parsed;
+  }
+  if (const toml::node* compute = t.get("compute")) {
+    const std::string name = text(*compute, "fidelity.compute");
+    const auto parsed = t800::parse_compute_fidelity(name);
+    if (!parsed)
+      fail(*compute, "unknown compute fidelity '" + name + "'; valid levels are auto, block, fine");
+    scene.fidelity.compute = *parsed;
+  }
+  scene.fidelity.skip_numerics = boolean(t, "skip_numerics", scene.fidelity.skip_numerics);
+  scene.fidelity.reuse_steps = boolean(t, "reuse_steps", scene.fidelity.reuse_steps);
+}
+
 Scene SceneReader::read() {
-  check_keys(root_, {"name", "description", "network", "topology", "workload", "calibration"}, "a scene");
+  check_keys(root_,
+             {"name", "description", "network", "topology", "workload", "calibration", "fidelity"},
+             "a scene");
   Scene scene;
   scene.file = file_;
   scene.name = text_or(root_, "name", fs::path(file_).stem().string());
@@ -404,6 +446,7 @@ Scene SceneReader::read() {
   scene.topology = topology(net);
   workload(scene);
   calibration(scene);
+  fidelity(scene);
   return scene;
 }
 

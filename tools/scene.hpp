@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "network/fidelity.hpp"
 #include "network/topology.hpp"
 #include "t800/processor_config.hpp"
 #include "workloads/params.hpp"
@@ -22,6 +23,8 @@ struct Scene {
   // [calibration]: the occam code-efficiency factor (t800::CostModel) and how it was fitted. 1 = uncalibrated.
   double code_efficiency = 1.0;
   std::string calibration_note;
+  // [fidelity]: links, compute, skip_numerics, reuse_steps (network/fidelity.hpp).
+  network::Fidelity fidelity;
 };
 
 // Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the value is

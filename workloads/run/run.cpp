@@ -64,6 +64,7 @@ RunReport run(const RunInputs& in) {
   workload->build(machine);
   RunReport report;
   report.name = in.name;
+  report.fidelity = in.options.fidelity;
   report.blocked = machine.run();
   report.simulated_us = machine.simulated_us();
   report.events = sc_core::sc_delta_count();
@@ -81,6 +82,12 @@ ResultValue RunReport::to_value() const {
   v.set("simulated_us", simulated_us);
   v.set("wall_s", wall_s);
   v.set("events", std::int64_t(events));
+  ResultValue f;
+  f.set("links", std::string(t800::to_string(fidelity.links)));
+  f.set("compute", std::string(t800::to_string(fidelity.compute)));
+  f.set("skip_numerics", fidelity.skip_numerics);
+  f.set("reuse_steps", fidelity.reuse_steps);
+  v.set("fidelity", f);
   ResultValue procs = ResultValue::list();
   for (const ProcessorReport& p : processors) {
     ResultValue r;

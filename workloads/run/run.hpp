@@ -46,6 +46,7 @@ struct RunReport {
   std::string name;
   double simulated_us = 0;
   double wall_s = 0;
+  network::Fidelity fidelity;  // what the run modelled and skipped
   std::uint64_t events = 0;  // SystemC delta cycles: one per batch of process activations at one time
   std::vector<ProcessorReport> processors;
   std::vector<LinkReport> links;
