@@ -100,7 +100,10 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind, con
     if (p.priority == Priority::low) {
       const sc_time now = sc_time_stamp();
       if (preempt_pending_) limit = std::min(limit, preempt_at_ - now);
-      if (!ready_low_.empty()) limit = std::min(limit, slice_end(p) - now);
+      if (!ready_low_.empty()) {
+        limit = std::min(limit, slice_end(p) - now);
+        ++stats_.clock_dependent;
+      }
     }
     const sc_time start = sc_time_stamp();
     activity_.set_cpu(kind, label);

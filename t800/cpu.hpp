@@ -31,6 +31,10 @@ struct CpuStatistics {
   std::int64_t dispatches = 0;
   std::int64_t preemptions = 0;
   std::int64_t timeslices = 0;
+  // Compute slices whose end was set by the timeslice clock (another low-priority process was waiting). The
+  // clock ticks at absolute times, so only while this stays unchanged is a stretch of simulation
+  // translation-invariant: the same work started later takes the same time.
+  std::int64_t clock_dependent = 0;
 };
 
 class Cpu {
