@@ -43,6 +43,14 @@ void Link::transmit(int from, Message message) {
   while (d.completed < ticket) sc_core::wait(d.sent_event);
 }
 
+bool Link::quiet() const {
+  for (const Direction& d : dir_)
+    if (!d.queue.empty() || !d.may_send || d.receiving || d.ack_owed || d.acks_pending > 0 ||
+        d.accepted_before_detect || !d.delivered.empty())
+      return false;
+  return true;
+}
+
 Message Link::receive(int to) {
   // Messages to end `to` travel in direction 1 - to.
   const int di = 1 - to;

@@ -32,6 +32,10 @@ class Link : public sc_core::sc_module {
   // Called from the receiving process's thread at end `to`: arms the input DMA and returns the next message.
   Message receive(int to);
 
+  // Nothing queued, in flight or owed in either direction (an input may be armed, waiting): what happens on
+  // the link from now on does not depend on its past.
+  bool quiet() const;
+
   const LinkActivity& activity(int direction) const { return dir_[direction].activity; }
   LinkActivity& activity(int direction) { return dir_[direction].activity; }
   const LinkConfig& config() const { return config_; }
