@@ -28,8 +28,10 @@ void run_body(Process* p, Process::Body body) {
 Machine::Machine(const Topology& topology, const MachineOptions& options)
     : topology_(topology), options_(options) {
   for (const ProcessorSpec& spec : topology_.processors) {
-    transputers_.push_back(std::make_unique<t800::Transputer>(module_name(spec.name).c_str(), spec.config));
+    transputers_.push_back(
+        std::make_unique<t800::Transputer>(module_name(spec.name).c_str(), spec.config));
     transputers_.back()->activity().keep_intervals(options.keep_intervals);
+    transputers_.back()->cpu().set_fidelity(options.fidelity.compute);
     cost_models_.emplace_back(spec.config, options.precision, options.code_efficiency);
   }
   elaborate_links();
@@ -51,19 +53,22 @@ void Machine::elaborate_links() {
     if (c.speed_mbps) config.speed_mbps = *c.speed_mbps;
     t800::Transputer& a = *transputers_[c.a.processor];
     t800::Transputer& b = *transputers_[c.b.processor];
-    link_modules_.push_back(std::make_unique<t800::Link>(("link" + std::to_string(i)).c_str(), config,
-                                                         &a.activity(), &b.activity()));
+    link_modules_.push_back(std::make_unique<t800::Link>(("link" + std::to_string(i)).c_str(),
+                                                         config, &a.activity(), &b.activity(),
+                                                         options_.fidelity.links));
     a.attach(c.a.link, *link_modules_.back(), 0);
     b.attach(c.b.link, *link_modules_.back(), 1);
-    links_.push_back({end_name(c.a) + "-" + end_name(c.b), {c.a.processor, c.b.processor},
+    links_.push_back({end_name(c.a) + "-" + end_name(c.b),
+                      {c.a.processor, c.b.processor},
                       link_modules_.back().get()});
   }
   if (topology_.host) {
     t800::Transputer& t = *transputers_[topology_.host->processor];
-    link_modules_.push_back(
-        std::make_unique<t800::Link>("hostlink", options_.link, nullptr, &t.activity()));
+    link_modules_.push_back(std::make_unique<t800::Link>("hostlink", options_.link, nullptr,
+                                                         &t.activity(), options_.fidelity.links));
     t.attach(topology_.host->link, *link_modules_.back(), 1);
-    links_.push_back({"host-" + end_name(*topology_.host), {kHost, topology_.host->processor},
+    links_.push_back({"host-" + end_name(*topology_.host),
+                      {kHost, topology_.host->processor},
                       link_modules_.back().get()});
   }
   for (auto& l : link_modules_) {
@@ -88,15 +93,18 @@ std::vector<int> Machine::route(int from, int to) const {
     std::vector<int> inner = from == kHost ? topology_.shortest_path(host_proc, to)
                                            : topology_.shortest_path(from, host_proc);
     if (inner.empty()) return {};
-    if (from == kHost) inner.insert(inner.begin(), kHost);
-    else inner.push_back(kHost);
+    if (from == kHost)
+      inner.insert(inner.begin(), kHost);
+    else
+      inner.push_back(kHost);
     return inner;
   }
   return topology_.shortest_path(from, to);
 }
 
 Channel& Machine::channel(const std::string& name, int from, int to) {
-  if (finalised_) throw std::logic_error("channel " + name + " declared after the simulation started");
+  if (finalised_)
+    throw std::logic_error("channel " + name + " declared after the simulation started");
   auto c = std::make_unique<Channel>();
   c->id = int(channels_.size());
   c->name = name;
@@ -110,9 +118,9 @@ Channel& Machine::channel(const std::string& name, int from, int to) {
   return *channels_.back();
 }
 
-// A channel gets a link direction to itself when its ends are neighbours and no other channel uses that
-// direction; every other inter-processor channel is routed, and every link direction a routed channel
-// enters gets a router at its receiving end.
+// A channel gets a link direction to itself when its ends are neighbours and no other channel uses
+// that direction; every other inter-processor channel is routed, and every link direction a routed
+// channel enters gets a router at its receiving end.
 void Machine::finalise_channels() {
   std::map<std::pair<int, int>, int> users;
   for (auto& c : channels_)
@@ -129,7 +137,8 @@ void Machine::finalise_channels() {
       c->writer_end = hop->second;
     } else {
       c->kind = Channel::Kind::routed;
-      for (std::size_t i = 0; i + 1 < c->path.size(); ++i) routed_hop[{c->path[i], c->path[i + 1]}] = true;
+      for (std::size_t i = 0; i + 1 < c->path.size(); ++i)
+        routed_hop[{c->path[i], c->path[i + 1]}] = true;
     }
   }
   for (const auto& [hop, routed] : routed_hop) {
@@ -139,29 +148,32 @@ void Machine::finalise_channels() {
   finalised_ = true;
 }
 
-// A software router (store-and-forward): takes each message off its link, then hands it to the local reader
-// or sends it on towards its destination along the channel's path. High priority, as occam routers ran.
+// A software router (store-and-forward): takes each message off its link, then hands it to the
+// local reader or sends it on towards its destination along the channel's path. High priority, as
+// occam routers ran.
 void Machine::start_router(int node, int from, t800::Link& link, int end) {
   const std::string name = "router@" + node_name(node) + "<-" + node_name(from);
-  Process& router = spawn(node, name, t800::Priority::high, [this, node, &link, end](Process& self) {
-    for (;;) {
-      self.set_status("router waiting");
-      t800::Message m = link_in(self, link, end);
-      const RoutedEnvelope& envelope = std::any_cast<const RoutedEnvelope&>(m.payload);
-      Channel& c = *channels_.at(envelope.channel);
-      if (c.to == node) {
-        deliver_to_mailbox(self, c, envelope.inner);
-        continue;
-      }
-      auto here = std::find(c.path.begin(), c.path.end(), node);
-      auto next = link_between(node, *(here + 1));
-      link_out(self, *next->first, next->second, std::move(m));
-    }
-  });
+  Process& router =
+      spawn(node, name, t800::Priority::high, [this, node, &link, end](Process& self) {
+        for (;;) {
+          self.set_status("router waiting");
+          t800::Message m = link_in(self, link, end);
+          const RoutedEnvelope& envelope = std::any_cast<const RoutedEnvelope&>(m.payload);
+          Channel& c = *channels_.at(envelope.channel);
+          if (c.to == node) {
+            deliver_to_mailbox(self, c, envelope.inner);
+            continue;
+          }
+          auto here = std::find(c.path.begin(), c.path.end(), node);
+          auto next = link_between(node, *(here + 1));
+          link_out(self, *next->first, next->second, std::move(m));
+        }
+      });
   router.set_daemon();
 }
 
-Process& Machine::spawn(int node, const std::string& name, t800::Priority priority, Process::Body body) {
+Process& Machine::spawn(int node, const std::string& name, t800::Priority priority,
+                        Process::Body body) {
   processes_.push_back(std::make_unique<Process>(*this, node, name, priority));
   Process* p = processes_.back().get();
   if (sc_core::sc_is_running())
@@ -182,7 +194,8 @@ std::vector<BlockedProcess> Machine::run() {
 
   std::vector<BlockedProcess> blocked;
   for (auto& p : processes_)
-    if (!p->ended() && !p->daemon()) blocked.push_back({p->name(), node_name(p->node()), p->status()});
+    if (!p->ended() && !p->daemon())
+      blocked.push_back({p->name(), node_name(p->node()), p->status()});
   return blocked;
 }
 

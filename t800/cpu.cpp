@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "t800/link.hpp"
 #include "t800/timing_table.hpp"
 
 namespace t800 {
 
+using sc_core::SC_NS;
 using sc_core::sc_time;
 using sc_core::sc_time_stamp;
-using sc_core::SC_NS;
 using sc_core::SC_ZERO_TIME;
 
 namespace {
@@ -17,20 +18,24 @@ const sc_time kTimeslice(timing::kTimesliceUs, sc_core::SC_US);
 }
 
 Cpu::Cpu(double cycle_ns, ProcessorActivity& activity, int interrupt_latency_cycles)
-    : cycle_(cycle_ns, SC_NS), latency_(cycle_ * double(interrupt_latency_cycles)), activity_(activity) {}
+    : cycle_(cycle_ns, SC_NS),
+      latency_(cycle_ * double(interrupt_latency_cycles)),
+      activity_(activity) {}
 
 void Cpu::make_ready(ProcessDescriptor& p) {
   if (p.priority == Priority::high) {
     ready_high_.push_back(&p);
     if (running_ && running_->priority == Priority::low && !preempt_pending_) {
-      // The running low-priority process keeps the CPU for the interrupt latency, then is preempted.
+      // The running low-priority process keeps the CPU for the interrupt latency, then is
+      // preempted.
       preempt_pending_ = true;
       preempt_at_ = sc_time_stamp() + latency_;
       running_->interrupt.notify(latency_);
     }
   } else {
     ready_low_.push_back(&p);
-    // A lone low-priority process runs unsliced; now that it has company it must watch its timeslice.
+    // A lone low-priority process runs unsliced; now that it has company it must watch its
+    // timeslice.
     if (running_ && running_->priority == Priority::low) running_->interrupt.notify(SC_ZERO_TIME);
   }
 }
@@ -61,8 +66,9 @@ void Cpu::deschedule(ProcessDescriptor& p) {
   dispatch_next();
 }
 
-// A low-priority process is descheduled at the next descheduling point once it has run past the second
-// timeslice tick after it was dispatched (so between one and two timeslices), if another one is waiting.
+// A low-priority process is descheduled at the next descheduling point once it has run past the
+// second timeslice tick after it was dispatched (so between one and two timeslices), if another one
+// is waiting.
 sc_time Cpu::slice_end(const ProcessDescriptor& p) const {
   const double ticks = std::floor(p.dispatched_at / kTimeslice);
   return kTimeslice * (ticks + 2.0);
@@ -72,11 +78,36 @@ bool Cpu::must_yield(const ProcessDescriptor& p) const {
   if (p.priority == Priority::high) return false;
   const sc_time now = sc_time_stamp();
   if (preempt_pending_ && now >= preempt_at_) return true;
-  return !ready_low_.empty() && now >= slice_end(p);
+  return timesliced() && !ready_low_.empty() && now >= slice_end(p);
+}
+
+// How long a low-priority process may compute before the scheduler must look again: until a pending
+// preemption, and, when another low-priority process waits, until its timeslice ends. At fine
+// fidelity it also wakes at every timeslice tick, as the hardware's timer does, whether or not
+// anyone waits.
+sc_time Cpu::slice_limit(const ProcessDescriptor& p, sc_time limit) {
+  if (p.priority != Priority::low) return limit;
+  const sc_time now = sc_time_stamp();
+  if (preempt_pending_) limit = std::min(limit, preempt_at_ - now);
+  if (!timesliced()) return limit;
+  if (!ready_low_.empty()) {
+    limit = std::min(limit, slice_end(p) - now);
+    ++stats_.clock_dependent;
+  }
+  if (fidelity_ == ComputeFidelity::fine)
+    limit = std::min(limit, kTimeslice * (std::floor(now / kTimeslice) + 1.0) - now);
+  return limit;
+}
+
+std::int64_t Cpu::dma_bytes(bool including_now) const {
+  std::int64_t n = 0;
+  for (const DmaEnd& d : dma_) n += d.link->dma_bytes(d.end, including_now);
+  return n;
 }
 
 void Cpu::yield(ProcessDescriptor& p, bool preempted) {
-  // A preempted process resumes before any other low-priority process (the T800 saves it in a register).
+  // A preempted process resumes before any other low-priority process (the T800 saves it in a
+  // register).
   if (preempted) {
     ready_low_.push_front(&p);
     ++stats_.preemptions;
@@ -88,28 +119,30 @@ void Cpu::yield(ProcessDescriptor& p, bool preempted) {
   while (running_ != &p) sc_core::wait(p.wake);
 }
 
-void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind, const std::string& label) {
+void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
+                  const std::string& label) {
   acquire(p);
+  const bool stealing = fidelity_ != ComputeFidelity::block && !dma_.empty();
   sc_time remaining = cycles(n);
   while (remaining > SC_ZERO_TIME) {
     if (must_yield(p)) {
       yield(p, preempt_pending_ && sc_time_stamp() >= preempt_at_);
       continue;
     }
-    sc_time limit = remaining;
-    if (p.priority == Priority::low) {
-      const sc_time now = sc_time_stamp();
-      if (preempt_pending_) limit = std::min(limit, preempt_at_ - now);
-      if (!ready_low_.empty()) {
-        limit = std::min(limit, slice_end(p) - now);
-        ++stats_.clock_dependent;
-      }
-    }
+    const sc_time limit = slice_limit(p, remaining);
     const sc_time start = sc_time_stamp();
+    const std::int64_t dma_before = stealing ? dma_bytes(true) : 0;
     activity_.set_cpu(kind, label);
     sc_core::wait(limit, p.interrupt);
     activity_.set_cpu(ProcessorState::idle);
     remaining -= sc_time_stamp() - start;
+    if (stealing) {  // every byte the link engines moved meanwhile took a memory cycle: the work
+                     // takes longer
+      const std::int64_t stolen =
+          std::max<std::int64_t>(0, dma_bytes(false) - dma_before) * timing::kLinkDmaCyclesPerByte;
+      stats_.stolen_cycles += stolen;
+      remaining += cycles(stolen);
+    }
   }
 }
 

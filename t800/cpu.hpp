@@ -1,20 +1,26 @@
 // The T800's CPU and its microcoded scheduler: one processor shared by the processes placed on it.
-// High priority processes run until they deschedule and preempt low priority ones (after the interrupt
-// latency); low priority processes are round-robin and timesliced (t800-timing.md section 7).
+// High priority processes run until they deschedule and preempt low priority ones (after the
+// interrupt latency); low priority processes are round-robin and timesliced (t800-timing.md section
+// 7).
 //
-// Every call is made from the SystemC thread of the process concerned. A process holds the CPU from the moment
-// it is dispatched until it deschedules (communication, end), exactly as on the hardware.
+// Every call is made from the SystemC thread of the process concerned. A process holds the CPU from
+// the moment it is dispatched until it deschedules (communication, end), exactly as on the
+// hardware.
 #pragma once
 
 #include <cstdint>
 #include <deque>
 #include <string>
+#include <vector>
 
 #include <systemc>
 
 #include "t800/activity.hpp"
+#include "t800/fidelity.hpp"
 
 namespace t800 {
+
+class Link;
 
 enum class Priority { high, low };
 
@@ -31,18 +37,28 @@ struct CpuStatistics {
   std::int64_t dispatches = 0;
   std::int64_t preemptions = 0;
   std::int64_t timeslices = 0;
-  // Compute slices whose end was set by the timeslice clock (another low-priority process was waiting). The
-  // clock ticks at absolute times, so only while this stays unchanged is a stretch of simulation
-  // translation-invariant: the same work started later takes the same time.
+  // Compute slices whose end was set by the timeslice clock (another low-priority process was
+  // waiting). The clock ticks at absolute times, so only while this stays unchanged is a stretch of
+  // simulation translation-invariant: the same work started later takes the same time.
   std::int64_t clock_dependent = 0;
+  std::int64_t stolen_cycles =
+      0;  // memory cycles link DMA took from compute (fine and auto fidelity)
 };
 
 class Cpu {
  public:
   Cpu(double cycle_ns, ProcessorActivity& activity, int interrupt_latency_cycles);
 
-  // Runs `cycles` of work for p, waiting for the CPU first if p does not hold it. p still holds the CPU after.
-  void execute(ProcessDescriptor& p, std::int64_t cycles, ProcessorState kind, const std::string& label);
+  void set_fidelity(ComputeFidelity fidelity) { fidelity_ = fidelity; }
+  ComputeFidelity fidelity() const { return fidelity_; }
+  // A link end of this transputer: its DMA engine takes memory cycles from whatever the CPU is
+  // running.
+  void attach_dma(const Link& link, int end) { dma_.push_back({&link, end}); }
+
+  // Runs `cycles` of work for p, waiting for the CPU first if p does not hold it. p still holds the
+  // CPU after.
+  void execute(ProcessDescriptor& p, std::int64_t cycles, ProcessorState kind,
+               const std::string& label);
   // p stops using the CPU (blocks on communication or ends); the next ready process is dispatched.
   void deschedule(ProcessDescriptor& p);
   // p becomes ready and waits until it is dispatched.
@@ -58,6 +74,9 @@ class Cpu {
   void yield(ProcessDescriptor& p, bool to_front);
   sc_core::sc_time slice_end(const ProcessDescriptor& p) const;
   bool must_yield(const ProcessDescriptor& p) const;
+  bool timesliced() const { return fidelity_ != ComputeFidelity::block; }
+  sc_core::sc_time slice_limit(const ProcessDescriptor& p, sc_core::sc_time limit);
+  std::int64_t dma_bytes(bool including_now) const;
 
   sc_core::sc_time cycle_;
   sc_core::sc_time latency_;
@@ -67,6 +86,12 @@ class Cpu {
   bool preempt_pending_ = false;
   sc_core::sc_time preempt_at_;
   CpuStatistics stats_;
+  ComputeFidelity fidelity_ = ComputeFidelity::automatic;
+  struct DmaEnd {
+    const Link* link;
+    int end;
+  };
+  std::vector<DmaEnd> dma_;
 };
 
 }  // namespace t800

@@ -1,37 +1,47 @@
 #include "t800/link.hpp"
 
+#include <algorithm>
+#include <functional>
 
 #include "t800/link_timing.hpp"
 
 namespace t800 {
 
-using sc_core::sc_time;
 using sc_core::SC_NS;
+using sc_core::sc_time;
+using sc_core::sc_time_stamp;
 using sc_core::SC_ZERO_TIME;
 
+namespace {
+
+void spawn_method(const std::function<void()>& body, sc_core::sc_event& trigger, const char* name) {
+  sc_core::sc_spawn_options options;
+  options.spawn_method();
+  options.dont_initialize();
+  options.set_sensitivity(&trigger);
+  sc_core::sc_spawn(body, sc_core::sc_gen_unique_name(name), &options);
+}
+
+}  // namespace
+
 Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, ProcessorActivity* end0,
-           ProcessorActivity* end1)
-    : sc_module(name), config_(config), end_{end0, end1} {
+           ProcessorActivity* end1, LinkFidelity fidelity)
+    : sc_module(name), config_(config), fidelity_(fidelity), end_{end0, end1} {
   const LinkTiming t(config);
   bit_ = sc_time(t.bit_ns, SC_NS);
   data_packet_ = sc_time(t.data_packet_ns, SC_NS);
   ack_packet_ = sc_time(t.ack_packet_ns, SC_NS);
   detect_delay_ = sc_time(t.ack_detect_ns, SC_NS);
   process_delay_ = sc_time(t.ack_process_ns, SC_NS);
+  // The same sum the packet level makes, in the kernel's time units, so both levels agree to the
+  // tick.
+  byte_period_ = std::max(data_packet_, detect_delay_ + ack_packet_ + process_delay_);
 
   for (int d = 0; d < 2; ++d) {
     sc_core::sc_spawn([this, d] { wire_thread(d); }, sc_core::sc_gen_unique_name("wire"));
-    sc_core::sc_spawn_options detect;
-    detect.spawn_method();
-    detect.dont_initialize();
-    detect.set_sensitivity(&dir_[d].detect_event);
-    sc_core::sc_spawn([this, d] { on_detect(d); }, sc_core::sc_gen_unique_name("detect"), &detect);
-    sc_core::sc_spawn_options process;
-    process.spawn_method();
-    process.dont_initialize();
-    process.set_sensitivity(&dir_[d].process_event);
-    sc_core::sc_spawn([this, d] { on_ack_processed(d); }, sc_core::sc_gen_unique_name("ackproc"),
-                      &process);
+    spawn_method([this, d] { on_detect(d); }, dir_[d].detect_event, "detect");
+    spawn_method([this, d] { on_ack_processed(d); }, dir_[d].process_event, "ackproc");
+    spawn_method([this, d] { on_closed_form(d); }, dir_[d].closed_form.milestone, "closedform");
   }
 }
 
@@ -46,7 +56,8 @@ void Link::transmit(int from, Message message) {
 bool Link::quiet() const {
   for (const Direction& d : dir_)
     if (!d.queue.empty() || !d.may_send || d.receiving || d.ack_owed || d.acks_pending > 0 ||
-        d.accepted_before_detect || !d.delivered.empty())
+        d.accepted_before_detect || !d.delivered.empty() || d.in_flight.active ||
+        d.closed_form.active)
       return false;
   return true;
 }
@@ -57,23 +68,68 @@ Message Link::receive(int to) {
   Direction& d = dir_[di];
   d.armed = true;
   if (d.receiving) count_receiver(di);
-  if (d.ack_owed) {  // a byte is waiting in the link's buffer: acknowledge it now
-    d.ack_owed = false;
-    queue_ack(di);
+  if (d.closed_form.active) {
+    if (!d.closed_form.armed) {  // the schedule is known from now on
+      d.closed_form.armed = true;
+      d.closed_form.armed_at = sc_time_stamp();
+      d.closed_form.milestone.notify(SC_ZERO_TIME);
+    }
+  } else {
+    if (d.ack_owed) {  // a byte is waiting in the link's buffer: acknowledge it now
+      d.ack_owed = false;
+      queue_ack(di);
+    }
+    if (d.receiving && d.received == d.incoming.bytes) complete_receive(di);
   }
-  if (d.receiving && d.received == d.incoming.bytes) complete_receive(di);
   while (d.delivered.empty()) sc_core::wait(d.delivered_event);
   Message m = std::move(d.delivered.front());
   d.delivered.pop_front();
   return m;
 }
 
+void Link::DmaCount::add(std::int64_t n, const sc_time& at) {
+  total += n;
+  if (at > latest_at) {
+    latest_at = at;
+    latest = n;
+  } else if (at == latest_at) {
+    latest += n;
+  }
+}
+
+std::int64_t Link::dma_bytes(int e, bool including_now) const {
+  const Direction& out = dir_[e];     // its data leaves through end e
+  const Direction& in = dir_[1 - e];  // its data arrives at end e
+  const sc_time now = sc_time_stamp();
+  std::int64_t n = including_now ? out.dma_sent.total + in.dma_received.total
+                                 : out.dma_sent.before(now) + in.dma_received.before(now);
+  if (now == SC_ZERO_TIME && !including_now) return n;
+  // Closed forms: the bytes started (sent) or arrived (received) by now, or strictly before now.
+  const sc_time until = including_now ? now : now - sc_core::sc_get_time_resolution();
+  if (out.closed_form.active && !out.closed_form.sender_done)
+    n += bytes_started_by(out.closed_form, out.closed_form.bytes, until);
+  if (in.closed_form.active && !in.closed_form.delivered && until >= data_packet_)
+    n += bytes_started_by(in.closed_form, in.closed_form.bytes, until - data_packet_);
+  return n;
+}
+
+// ---- packet level ----
+
 void Link::wire_thread(int w) {
   Direction& own = dir_[w];
   for (;;) {
-    if (own.acks_pending > 0) {
+    const bool data_waiting = !own.queue.empty() && own.may_send && !own.closed_form.active &&
+                              own.sent < own.queue.front().bytes;
+    if (own.in_flight.active) {
+      finish_in_flight(w);
+    } else if (own.acks_pending > 0) {
       send_ack_packet(w);
-    } else if (!own.queue.empty() && own.may_send && own.sent < own.queue.front().bytes) {
+    } else if (data_waiting && own.sent == 0 && dir_[1 - w].closed_form.active &&
+               fidelity_ == LinkFidelity::automatic) {
+      hand_over(1 - w);  // this direction starts: the other's closed form no longer holds
+    } else if (data_waiting && own.sent == 0 && closed_form_allowed(w)) {
+      start_closed_form(w);
+    } else if (data_waiting) {
       send_data_packet(w);
     } else {
       sc_core::wait(own.wire_wake);
@@ -83,33 +139,45 @@ void Link::wire_thread(int w) {
 
 void Link::send_data_packet(int di) {
   Direction& d = dir_[di];
-  const sc_time start = sc_core::sc_time_stamp();
+  const sc_time start = sc_time_stamp();
   if (d.sent == 0) {  // the first byte of a message: both ends are now communicating
     d.receiving = true;
-    d.incoming = d.queue.front();  // the receiver's copy: the sender may finish before the last byte lands
+    d.incoming =
+        d.queue.front();  // the receiver's copy: the sender may finish before the last byte lands
     d.received = 0;
     if (end(di)) end(di)->transfer_begin();
     if (d.armed) count_receiver(di);
   }
   ++d.sent;
+  d.dma_sent.add(1, start);
   d.may_send = false;
   d.detect_event.notify(detect_delay_);
+  d.wire_busy_until = start + data_packet_;
   sc_core::wait(data_packet_);
-  d.activity.packet(start, data_packet_, true);
+  finish_data_packet(di, start);
+}
+
+void Link::finish_data_packet(int di, const sc_time& start) {
+  dir_[di].activity.packet(start, data_packet_, true);
   on_byte_arrived(di);
 }
 
 void Link::send_ack_packet(int w) {
   Direction& wire = dir_[w];
-  const int acked_direction = 1 - w;
   --wire.acks_pending;
-  const sc_time start = sc_core::sc_time_stamp();
+  const sc_time start = sc_time_stamp();
+  wire.wire_busy_until = start + ack_packet_;
   sc_core::wait(ack_packet_);
-  wire.activity.packet(start, ack_packet_, false);
+  finish_ack_packet(w, start);
+}
 
+void Link::finish_ack_packet(int w, const sc_time& start) {
+  dir_[w].activity.packet(start, ack_packet_, false);
+  const int acked_direction = 1 - w;
   Direction& d = dir_[acked_direction];
   ++d.acked;
-  if (d.acked == d.queue.front().bytes) {  // the whole message is acknowledged: the sender may go on
+  if (d.acked ==
+      d.queue.front().bytes) {  // the whole message is acknowledged: the sender may go on
     d.activity.message_done(d.acked, d.queue.front().label);
     d.queue.pop_front();
     d.sent = d.acked = 0;
@@ -118,6 +186,18 @@ void Link::send_ack_packet(int w) {
     if (end(acked_direction)) end(acked_direction)->transfer_end();
   }
   d.process_event.notify(process_delay_);
+}
+
+// A packet that was on the wire when its message was handed over: it ends as if sent at this level.
+void Link::finish_in_flight(int w) {
+  Direction& own = dir_[w];
+  const InFlight packet = own.in_flight;
+  const sc_time end = packet.start + (packet.data ? data_packet_ : ack_packet_);
+  if (end > sc_time_stamp()) sc_core::wait(end - sc_time_stamp());
+  own.in_flight.active = false;
+  if (!packet.data) return finish_ack_packet(w, packet.start);
+  if (!packet.recorded) own.activity.packet(packet.start, data_packet_, true);
+  on_byte_arrived(w);
 }
 
 void Link::on_detect(int di) {
@@ -144,8 +224,9 @@ void Link::on_ack_processed(int di) {
 void Link::on_byte_arrived(int di) {
   Direction& d = dir_[di];
   ++d.received;
-  // A T414 acknowledges after the whole packet: a byte taken by a waiting input is owed its acknowledge even
-  // if that input completes (and disarms) before the acknowledge goes out.
+  d.dma_received.add(1, sc_time_stamp());
+  // A T414 acknowledges after the whole packet: a byte taken by a waiting input is owed its
+  // acknowledge even if that input completes (and disarms) before the acknowledge goes out.
   if (d.armed && config_.protocol == LinkProtocol::t414) d.accepted_before_detect = true;
   if (d.armed && d.received == d.incoming.bytes) complete_receive(di);
 }
@@ -162,12 +243,216 @@ void Link::complete_receive(int di) {
   d.receiver_counted = false;
 }
 
-// The receiving processor communicates from when its input is armed and the message has begun to arrive.
+// The receiving processor communicates from when its input is armed and the message has begun to
+// arrive.
 void Link::count_receiver(int di) {
   Direction& d = dir_[di];
   if (d.receiver_counted) return;
   d.receiver_counted = true;
   if (end(1 - di)) end(1 - di)->transfer_begin();
+}
+
+// ---- closed form ----
+//
+// With the other direction silent, byte k's data packet starts at s_k and its acknowledge at a_k:
+//   s_1 = start;  a_1 = max(s_1 + detect, armed_at)       (flow control: no acknowledge before the
+//   input is armed) s_2 = max(a_1 + ack + process, s_1 + data);  s_k = s_2 + (k - 2) * period;  a_k
+//   = s_k + detect  (k >= 2)
+// with period = max(data, detect + ack + process): exactly the packet level's sequence
+// (LinkTiming). The sender goes on when the last acknowledge ends; the receiver has the message
+// when the last byte has arrived and its input is armed.
+
+bool Link::closed_form_allowed(int di) const {
+  switch (fidelity_) {
+    case LinkFidelity::packet:
+      return false;
+    case LinkFidelity::message:
+      return true;
+    case LinkFidelity::automatic:
+      break;
+  }
+  // The other direction must be silent: nothing to send, nothing of its own on either wire.
+  const Direction& other = dir_[1 - di];
+  return other.queue.empty() && !other.closed_form.active && !other.in_flight.active &&
+         !dir_[di].in_flight.active && other.acks_pending == 0 && dir_[di].acks_pending == 0 &&
+         sc_time_stamp() >= other.wire_busy_until;
+}
+
+void Link::start_closed_form(int di) {
+  Direction& d = dir_[di];
+  ClosedForm& cf = d.closed_form;
+  cf.active = true;
+  cf.bytes = d.queue.front().bytes;
+  cf.start = sc_time_stamp();
+  cf.armed = d.armed;
+  cf.armed_at = cf.start;
+  cf.sender_done = cf.delivered = false;
+  d.receiving = true;
+  d.incoming = d.queue.front();
+  d.received = 0;
+  ++closed_form_messages_;
+  if (end(di)) end(di)->transfer_begin();
+  if (d.armed) count_receiver(di);
+  if (cf.armed) cf.milestone.notify(SC_ZERO_TIME);
+}
+
+sc_time Link::byte_start(const ClosedForm& cf, std::int64_t k) const {
+  if (k == 1) return cf.start;
+  const sc_time second =
+      std::max(ack_start(cf, 1) + ack_packet_ + process_delay_, cf.start + data_packet_);
+  return second + byte_period_ * double(k - 2);
+}
+
+sc_time Link::ack_start(const ClosedForm& cf, std::int64_t k) const {
+  if (k == 1) return std::max(cf.start + detect_delay_, cf.armed_at);
+  return byte_start(cf, k) + detect_delay_;
+}
+
+sc_time Link::sender_done_time(int di) const {
+  const ClosedForm& cf = dir_[di].closed_form;
+  return ack_start(cf, cf.bytes) + ack_packet_;
+}
+
+sc_time Link::delivery_time(int di) const {
+  const ClosedForm& cf = dir_[di].closed_form;
+  return std::max(byte_start(cf, cf.bytes) + data_packet_, cf.armed_at);
+}
+
+std::int64_t Link::bytes_started_by(const ClosedForm& cf, std::int64_t bytes,
+                                    const sc_time& t) const {
+  if (t < cf.start) return 0;
+  if (!cf.armed || bytes == 1) return 1;
+  const sc_time second = byte_start(cf, 2);
+  if (t < second) return 1;
+  const auto later = std::int64_t((t - second) / byte_period_);
+  return std::min(bytes, 2 + later);
+}
+
+void Link::on_closed_form(int di) {
+  Direction& d = dir_[di];
+  ClosedForm& cf = d.closed_form;
+  if (!cf.active || !cf.armed) return;
+  const sc_time now = sc_time_stamp();
+  const sc_time done = sender_done_time(di), delivered = delivery_time(di);
+  if (!cf.sender_done && now >= done) closed_form_sender_done(di);
+  if (!cf.delivered && now >= delivered) {
+    cf.delivered = true;
+    d.dma_received.add(cf.bytes - 1, cf.start);
+    d.dma_received.add(1, byte_start(cf, cf.bytes) + data_packet_);
+    complete_receive(di);
+  }
+  if (cf.sender_done && cf.delivered) {
+    cf.active = false;
+    d.wire_wake.notify(SC_ZERO_TIME);  // its wire is free for the next message
+    return;
+  }
+  const sc_time next = cf.sender_done ? delivered : cf.delivered ? done : std::min(done, delivered);
+  cf.milestone.notify(next - now);
+}
+
+// The last acknowledge is in: what the packet level does at that moment, with the message's packets
+// entered in the activity record.
+void Link::closed_form_sender_done(int di) {
+  Direction& d = dir_[di];
+  const std::int64_t bytes = d.closed_form.bytes;
+  d.closed_form.sender_done = true;
+  record_closed_form_packets(di, bytes, bytes);
+  d.dma_sent.add(bytes, d.closed_form.start);
+  d.activity.message_done(bytes, d.queue.front().label);
+  d.queue.pop_front();
+  d.sent = d.acked = 0;
+  ++d.completed;
+  d.sent_event.notify(SC_ZERO_TIME);
+  if (end(di)) end(di)->transfer_end();
+  d.may_send = false;
+  d.process_event.notify(process_delay_);
+}
+
+void Link::record_closed_form_packets(int di, std::int64_t data_packets, std::int64_t ack_packets) {
+  const ClosedForm& cf = dir_[di].closed_form;
+  for (std::int64_t k = 1; k <= data_packets; ++k)
+    dir_[di].activity.packet(byte_start(cf, k), data_packet_, true);
+  for (std::int64_t k = 1; k <= ack_packets; ++k)
+    dir_[1 - di].activity.packet(ack_start(cf, k), ack_packet_, false);
+}
+
+// The other direction has started: the state the packet level would be in now, worked out from the
+// closed form, byte by byte. Events still to come (a detect, an acknowledge's processing, packets
+// on the wires) are scheduled at their times, so the packet level carries on exactly.
+void Link::hand_over(int di) {
+  Direction& d = dir_[di];
+  Direction& back = dir_[1 - di];  // its wire carries this direction's acknowledges
+  ClosedForm& cf = d.closed_form;
+  cf.active = false;
+  cf.milestone.cancel();
+  ++handovers_;
+  const sc_time now = sc_time_stamp();
+  const std::int64_t bytes = cf.bytes;
+  const bool sender_side = !cf.sender_done;  // else the acknowledges are all in and recorded
+  std::int64_t sent = 0, acked = 0, received = 0, recorded_data = 0, recorded_acks = 0;
+  bool may_send = false;
+  for (std::int64_t k = 1; k <= bytes; ++k) {
+    if (k >= 2 && !cf.armed) break;  // the sender waits for the first acknowledge
+    const sc_time s = byte_start(cf, k);
+    if (s >= now) {
+      may_send = true;  // byte k is due now: the packet level sends it
+      break;
+    }
+    sent = k;
+    may_send = false;  // until its acknowledge has been processed
+    if (s + data_packet_ <= now) {
+      received = k;
+      if (!cf.delivered) d.dma_received.add(1, s + data_packet_);
+      recorded_data = k;
+    } else {
+      d.in_flight = {true, true, !sender_side, s};
+    }
+    const sc_time detect = s + detect_delay_;
+    if (detect > now) {
+      d.detect_event.notify(detect - now);
+      if (config_.protocol == LinkProtocol::t414 && received == k && cf.armed &&
+          cf.armed_at <= s + data_packet_)
+        d.accepted_before_detect = true;
+      break;
+    }
+    if (!cf.armed) {
+      d.ack_owed = true;
+      break;
+    }
+    const sc_time a = ack_start(cf, k);
+    if (a >= now) {
+      ++back.acks_pending;
+      break;
+    }
+    if (a + ack_packet_ > now) {
+      if (sender_side) back.in_flight = {true, false, false, a};
+      break;
+    }
+    acked = k;
+    recorded_acks = k;
+    const sc_time processed = a + ack_packet_ + process_delay_;
+    if (processed > now) {
+      if (sender_side) d.process_event.notify(processed - now);
+      break;
+    }
+    may_send = true;
+  }
+  if (sender_side && acked == bytes) {  // its last acknowledge ended just now
+    d.in_flight.recorded = true;
+    closed_form_sender_done(di);
+  } else if (sender_side) {
+    record_closed_form_packets(di, recorded_data, recorded_acks);
+    d.sent = sent;
+    d.acked = acked;
+    d.may_send = may_send;
+    if (sent > 0) d.dma_sent.add(sent, cf.start);
+  }
+  if (!cf.delivered) {
+    d.received = received;
+    if (received == bytes && cf.armed) complete_receive(di);
+  }
+  d.wire_wake.notify(SC_ZERO_TIME);
+  back.wire_wake.notify(SC_ZERO_TIME);
 }
 
 }  // namespace t800

@@ -1,11 +1,21 @@
-// One physical link between two link ends: two wires, one each way. Direction d (0: end 0 -> end 1, 1: the
-// reverse) sends its data packets on wire d and receives its acknowledges on wire 1-d, so each wire carries one
-// direction's data interleaved with the other direction's acknowledges (t800-timing.md section 6).
+// One physical link between two link ends: two wires, one each way. Direction d (0: end 0 -> end 1,
+// 1: the reverse) sends its data packets on wire d and receives its acknowledges on wire 1-d, so
+// each wire carries one direction's data interleaved with the other direction's acknowledges
+// (t800-timing.md section 6).
 //
-// Protocol, byte by byte: the sender's DMA engine sends an 11-bit data packet, then waits for the 2-bit
-// acknowledge before sending the next. The receiver acknowledges a byte only while an input is waiting for it
-// (flow control). A T800 receiver acknowledges as soon as a packet starts arriving (overlapped acknowledge), a
-// T414 only after the whole packet. Both DMA engines run concurrently with the CPUs.
+// Protocol, byte by byte: the sender's DMA engine sends an 11-bit data packet, then waits for the
+// 2-bit acknowledge before sending the next. The receiver acknowledges a byte only while an input
+// is waiting for it (flow control). A T800 receiver acknowledges as soon as a packet starts
+// arriving (overlapped acknowledge), a T414 only after the whole packet. Both DMA engines run
+// concurrently with the CPUs.
+//
+// Fidelity (t800/fidelity.hpp): at `packet` every packet is an event. At `message` a message
+// follows the closed form of LinkTiming -- a handful of events per message instead of several per
+// byte -- which is exact while the other direction is silent. At `automatic` a message starts in
+// closed form only when the other direction is silent, and when the other direction starts
+// meanwhile, the message in flight is handed over to the packet level at that instant: its byte,
+// packet and acknowledge state is worked out from the closed form (hand_over), so the result is the
+// packet level's.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +25,7 @@
 #include <systemc>
 
 #include "t800/activity.hpp"
+#include "t800/fidelity.hpp"
 #include "t800/message.hpp"
 #include "t800/processor_config.hpp"
 
@@ -24,16 +35,17 @@ class Link : public sc_core::sc_module {
  public:
   // `activity[e]` is the processor at end e (nullptr for the host PC, which is not accounted).
   Link(const sc_core::sc_module_name& name, const LinkConfig& config, ProcessorActivity* end0,
-       ProcessorActivity* end1);
+       ProcessorActivity* end1, LinkFidelity fidelity = LinkFidelity::automatic);
 
-  // Called from the sending process's thread: moves the message out of end `from` and returns when its last
-  // byte has been acknowledged. Several senders on one end are served in order.
+  // Called from the sending process's thread: moves the message out of end `from` and returns when
+  // its last byte has been acknowledged. Several senders on one end are served in order.
   void transmit(int from, Message message);
-  // Called from the receiving process's thread at end `to`: arms the input DMA and returns the next message.
+  // Called from the receiving process's thread at end `to`: arms the input DMA and returns the next
+  // message.
   Message receive(int to);
 
-  // Nothing queued, in flight or owed in either direction (an input may be armed, waiting): what happens on
-  // the link from now on does not depend on its past.
+  // Nothing queued, in flight or owed in either direction (an input may be armed, waiting): what
+  // happens on the link from now on does not depend on its past.
   bool quiet() const;
 
   const LinkActivity& activity(int direction) const { return dir_[direction].activity; }
@@ -41,8 +53,45 @@ class Link : public sc_core::sc_module {
   const LinkConfig& config() const { return config_; }
   // Time of one data-packet bit.
   sc_core::sc_time bit_time() const { return bit_; }
+  // Bytes the DMA engines of end `e` have moved (read when sent, written on arrival), counting
+  // those at this very instant or not: each takes a memory cycle from that end's CPU. A CPU charges
+  // a compute block with the bytes moved after its start (a byte whose arrival woke the process was
+  // written before it ran) and strictly before its end (the kernel may not have run that instant's
+  // packet events yet).
+  std::int64_t dma_bytes(int e, bool including_now) const;
+  // Messages that ran in closed form, and those handed over to the packet level mid-way.
+  std::int64_t closed_form_messages() const { return closed_form_messages_; }
+  std::int64_t handovers() const { return handovers_; }
 
  private:
+  // Bytes a DMA engine moved, and how many of them at the latest instant (see dma_bytes).
+  struct DmaCount {
+    std::int64_t total = 0, latest = 0;
+    sc_core::sc_time latest_at;
+    void add(std::int64_t n, const sc_core::sc_time& at);
+    std::int64_t before(const sc_core::sc_time& now) const {
+      return total - (latest_at == now ? latest : 0);
+    }
+  };
+  // A message of one direction following the closed form: its schedule is a function of when it
+  // started and when its receiver's input was armed.
+  struct ClosedForm {
+    bool active = false;
+    std::int64_t bytes = 0;
+    sc_core::sc_time start;     // its first data packet starts
+    bool armed = false;         // the receiver's input is armed, since
+    sc_core::sc_time armed_at;  // (the start, if it was armed before)
+    bool sender_done = false, delivered = false;
+    sc_core::sc_event milestone;  // the next of: last acknowledge in, last byte delivered
+  };
+  // A packet a wire was carrying when its message was handed over to the packet level.
+  struct InFlight {
+    bool active = false;
+    bool data = false;      // data of this wire's direction, or an acknowledge for the other
+    bool recorded = false;  // already in the activity record (closed forms record whole messages)
+    sc_core::sc_time start;
+  };
+
   struct Direction {
     // sending DMA
     std::deque<Message> queue;
@@ -63,12 +112,32 @@ class Link : public sc_core::sc_module {
     // wire of this direction's data, and its pending acknowledges for the other direction
     int acks_pending = 0;
     sc_core::sc_event wire_wake, detect_event, process_event;
+    sc_core::sc_time wire_busy_until;  // end of the packet this wire carries
+    InFlight in_flight;
     LinkActivity activity;
+    ClosedForm closed_form;
+    DmaCount dma_sent, dma_received;  // bytes counted so far (closed forms: once settled)
   };
 
   void wire_thread(int wire);
   void send_data_packet(int d);
+  void finish_data_packet(int d, const sc_core::sc_time& start);
   void send_ack_packet(int wire);
+  void finish_ack_packet(int wire, const sc_core::sc_time& start);
+  void finish_in_flight(int wire);
+  // closed form
+  bool closed_form_allowed(int d) const;
+  void start_closed_form(int d);
+  void on_closed_form(int d);
+  void closed_form_sender_done(int d);
+  void hand_over(int d);
+  sc_core::sc_time byte_start(const ClosedForm& cf, std::int64_t k) const;  // k >= 1
+  sc_core::sc_time ack_start(const ClosedForm& cf, std::int64_t k) const;   // needs cf.armed
+  sc_core::sc_time sender_done_time(int d) const;
+  sc_core::sc_time delivery_time(int d) const;
+  std::int64_t bytes_started_by(const ClosedForm& cf, std::int64_t bytes,
+                                const sc_core::sc_time& t) const;
+  void record_closed_form_packets(int d, std::int64_t data_packets, std::int64_t ack_packets);
   void on_detect(int d);
   void on_ack_processed(int d);
   void on_byte_arrived(int d);
@@ -78,7 +147,9 @@ class Link : public sc_core::sc_module {
   ProcessorActivity* end(int e) { return end_[e]; }
 
   LinkConfig config_;
-  sc_core::sc_time bit_, data_packet_, ack_packet_, detect_delay_, process_delay_;
+  LinkFidelity fidelity_;
+  sc_core::sc_time bit_, data_packet_, ack_packet_, detect_delay_, process_delay_, byte_period_;
+  std::int64_t closed_form_messages_ = 0, handovers_ = 0;
   ProcessorActivity* end_[2];
   Direction dir_[2];
 };

@@ -9,6 +9,9 @@ Transputer::Transputer(const sc_core::sc_module_name& name, const ProcessorConfi
       config_(config),
       cpu_(cycle_ns(config.grade), activity_, timing::kInterruptLatencyTypical) {}
 
-void Transputer::attach(int link_number, Link& link, int end) { ports_.at(link_number) = {&link, end}; }
+void Transputer::attach(int link_number, Link& link, int end) {
+  ports_.at(link_number) = {&link, end};
+  cpu_.attach_dma(link, end);
+}
 
 }  // namespace t800

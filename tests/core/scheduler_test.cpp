@@ -1,5 +1,5 @@
-// The T800 scheduler: timeslicing of low-priority processes, preemption by high priority, internal channels
-// (t800-timing.md sections 3 and 7).
+// The T800 scheduler: timeslicing of low-priority processes, preemption by high priority, internal
+// channels (t800-timing.md sections 3 and 7).
 #include <gtest/gtest.h>
 
 #include "core_fixtures.hpp"
@@ -25,7 +25,8 @@ TEST(Timeslicing, TwoLowPriorityProcessesShareTheCpu) {
   // Together they need 20 ms of CPU; sliced, neither finishes near 10 ms.
   EXPECT_NEAR(std::max(end_us[0], end_us[1]), 2 * cycles * kCycleUs, 1e-6);
   EXPECT_GT(std::min(end_us[0], end_us[1]), 2 * cycles * kCycleUs - 2 * kSliceUs - 1e-6);
-  // Every slice but the last of each lasts between one and two timeslice periods, and they alternate.
+  // Every slice but the last of each lasts between one and two timeslice periods, and they
+  // alternate.
   const auto& slices = m.transputer(0).activity().intervals();
   ASSERT_GE(slices.size(), 6u);
   for (std::size_t i = 0; i + 2 < slices.size(); ++i) {
@@ -52,7 +53,8 @@ TEST(Preemption, HighPriorityPreemptsWithinTheLatency) {
   auto& wake = m.channel("wake", 1, 0);
   double arrived_us = 0, low_end_us = 0;
   const std::int64_t low_cycles = 200000, high_cycles = 2000;
-  // The handler starts first, arms its input and deschedules; the background process then has the CPU.
+  // The handler starts first, arms its input and deschedules; the background process then has the
+  // CPU.
   m.spawn(0, "handler", t800::Priority::high, [&](network::Process& p) {
     p.in(wake);
     p.compute(high_cycles, "handler");
@@ -68,8 +70,9 @@ TEST(Preemption, HighPriorityPreemptsWithinTheLatency) {
   ASSERT_TRUE(m.run().empty());
   EXPECT_EQ(m.transputer(0).cpu().statistics().preemptions, 1);  // only the wake-up
 
-  // Find the message's arrival: the end of the link transfer into P0 = the start of the handler's CPU work
-  // minus the latency; check the handler's compute began within [typical, max] latency of the arrival.
+  // Find the message's arrival: the end of the link transfer into P0 = the start of the handler's
+  // CPU work minus the latency; check the handler's compute began within [typical, max] latency of
+  // the arrival.
   const auto& iv = m.transputer(0).activity().intervals();
   double handler_start = -1;
   for (const auto& i : iv)
@@ -78,13 +81,18 @@ TEST(Preemption, HighPriorityPreemptsWithinTheLatency) {
       break;
     }
   ASSERT_GT(handler_start, 0);
-  // The 4-byte message arrives at: sender's 1 ms + out set-up, then 3 byte periods + one data packet.
+  // The 4-byte message arrives at: sender's 1 ms + out set-up, then 3 byte periods + one data
+  // packet.
   arrived_us = 1000.0 + t800::timing::kCommFixed * kCycleUs + (3 * 0.575 + 0.55);
   EXPECT_GE(handler_start - arrived_us, t800::timing::kInterruptLatencyTypical * kCycleUs - 1e-6);
   EXPECT_LE(handler_start - arrived_us, t800::timing::kInterruptLatencyMax * kCycleUs + 1e-6);
-  // The background process loses exactly the CPU time the handler used.
+  // The background process loses exactly the CPU time the handler used, and the memory cycles the
+  // input DMA took while it computed (one per byte of the 4-byte message).
   const double handler_cpu = (high_cycles + t800::timing::kCommFixed) * kCycleUs;
-  EXPECT_NEAR(low_end_us, low_cycles * kCycleUs + handler_cpu, 1e-6);
+  const double dma_cycles = 4 * t800::timing::kLinkDmaCyclesPerByte * kCycleUs;
+  EXPECT_NEAR(low_end_us, low_cycles * kCycleUs + handler_cpu + dma_cycles, 1e-6);
+  EXPECT_EQ(m.transputer(0).cpu().statistics().stolen_cycles,
+            4 * t800::timing::kLinkDmaCyclesPerByte);
 }
 
 TEST(InternalChannel, SecondToArriveCopiesTheMessage) {
@@ -104,15 +112,19 @@ TEST(InternalChannel, SecondToArriveCopiesTheMessage) {
 }
 
 TEST(Par, BranchesRunConcurrentlyAndJoin) {
-  // P1 sends to both its neighbours at once over two different links: the DMA engines run concurrently, so
-  // the pair takes about one message time, not two.
+  // P1 sends to both its neighbours at once over two different links: the DMA engines run
+  // concurrently, so the pair takes about one message time, not two.
   network::Machine m(core_test::chain(2), core_test::options(20));
   auto& left = m.channel("left", 1, 0);
   auto& right = m.channel("right", 1, 2);
   double end_us = 0;
   m.spawn(1, "parent", t800::Priority::low, [&](network::Process& p) {
-    p.par({[&](network::Process& q) { q.out(left, {1000, {}, "l"}); },
-           [&](network::Process& q) { q.out(right, {1000, {}, "r"}); }});
+    p.par({[&](network::Process& q) {
+             q.out(left, {1000, {}, "l"});
+           },
+           [&](network::Process& q) {
+             q.out(right, {1000, {}, "r"});
+           }});
     end_us = p.now_us();
   });
   m.spawn(0, "left reader", t800::Priority::low, [&](network::Process& p) { p.in(left); });

@@ -1,0 +1,231 @@
+// Fidelity levels (t800/fidelity.hpp): `automatic` must give the packet level's results to the
+// kernel's time tick, including when the other direction starts in the middle of a closed-form
+// message (the hand-over); `message` must agree while a link is used one way at a time, and may
+// differ when both directions overlap. Compute: `fine` and `automatic` agree; link DMA takes its
+// memory cycles from a computing CPU.
+//
+// SystemC elaborates once per process, so every simulation here runs in a forked child.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core_fixtures.hpp"
+
+namespace {
+
+using t800::ComputeFidelity;
+using t800::LinkFidelity;
+using t800::LinkProtocol;
+
+constexpr int kValues = 16;
+using Values = std::array<double, kValues>;
+
+// Runs `simulate` in a child process and returns what it wrote (NaN everywhere if the child
+// failed).
+Values in_child(const std::function<Values()>& simulate) {
+  int fds[2];
+  if (pipe(fds) != 0) return {};
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fds[0]);
+    const Values v = simulate();
+    const ssize_t written = write(fds[1], v.data(), sizeof v);
+    _exit(written == ssize_t(sizeof v) ? 0 : 1);
+  }
+  close(fds[1]);
+  Values v;
+  v.fill(std::nan(""));
+  Values got;
+  const bool read_all = read(fds[0], got.data(), sizeof got) == ssize_t(sizeof got);
+  close(fds[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (read_all && WIFEXITED(status) && WEXITSTATUS(status) == 0) v = got;
+  return v;
+}
+
+struct Exchange {
+  double mbps = 20;
+  LinkProtocol protocol = LinkProtocol::overlapped;
+  std::int64_t forward_bytes = 64, reverse_bytes = 24;
+  int receiver_delay_cycles = 0;  // P1 arms its input this late
+  int reverse_delay_cycles = -1;  // P1 starts sending back this late (-1: no reverse message)
+  int forward_messages = 1;
+};
+
+// P0 sends to P1 while P1, after a delay, sends back: the times each side sees, and the accounting.
+Values exchange(const Exchange& e, LinkFidelity links,
+                ComputeFidelity compute = ComputeFidelity::automatic) {
+  network::MachineOptions o = core_test::options(e.mbps, e.protocol);
+  o.fidelity.links = links;
+  o.fidelity.compute = compute;
+  network::Machine m(core_test::chain(1), o);
+  Values v;
+  v.fill(-1);
+  auto& forward = m.channel("forward", 0, 1);
+  auto& reverse = m.channel("reverse", 1, 0);
+  m.spawn(0, "send", t800::Priority::low, [&](network::Process& p) {
+    for (int i = 0; i < e.forward_messages; ++i) p.out(forward, {e.forward_bytes, {}, "f"});
+    v[0] = p.now_us();
+  });
+  m.spawn(1, "receive", t800::Priority::low, [&](network::Process& p) {
+    p.compute(e.receiver_delay_cycles);
+    for (int i = 0; i < e.forward_messages; ++i) p.in(forward);
+    v[1] = p.now_us();
+  });
+  if (e.reverse_delay_cycles >= 0) {
+    m.spawn(1, "back", t800::Priority::high, [&](network::Process& p) {
+      p.compute(e.reverse_delay_cycles);
+      p.out(reverse, {e.reverse_bytes, {}, "r"});
+      v[2] = p.now_us();
+    });
+    m.spawn(0, "take", t800::Priority::high, [&](network::Process& p) {
+      p.in(reverse);
+      v[3] = p.now_us();
+    });
+  }
+  if (!m.run().empty()) return v;
+  v[4] = m.simulated_us();
+  for (int i = 0; i < 2; ++i) {
+    v[5 + i] = m.transputer(i).activity().compute_us();
+    v[7 + i] = m.transputer(i).activity().communicate_us();
+  }
+  const t800::Link& link = *m.links()[0].link;
+  for (int d = 0; d < 2; ++d) {
+    v[9 + d] = link.activity(d).busy_us();
+    v[11 + d] = double(link.activity(d).bytes());
+  }
+  v[13] = double(link.closed_form_messages());
+  v[14] = double(link.handovers());
+  v[15] = double(m.transputer(1).cpu().statistics().stolen_cycles);
+  return v;
+}
+
+constexpr int kCompared = 13;  // values 0..12 are results; the rest describe how the run went
+
+void expect_same_results(const Values& a, const Values& b, const std::string& what) {
+  for (int i = 0; i < kCompared; ++i) EXPECT_NEAR(a[i], b[i], 1e-9) << what << ", value " << i;
+}
+
+std::string describe(const Exchange& e) {
+  return std::to_string(int(e.mbps)) + " Mbit/s " + std::string(t800::to_string(e.protocol)) +
+         ", receiver delay " + std::to_string(e.receiver_delay_cycles) + ", reverse delay " +
+         std::to_string(e.reverse_delay_cycles);
+}
+
+// The reverse direction starts at every 50 ns step across several byte periods of a closed-form
+// message, so the hand-over meets every phase of the protocol (data on the wire, detect pending,
+// acknowledge on the other wire, acknowledge being processed), with the receiver armed early and
+// late.
+//  * Without DMA cycle stealing (compute `block`) the two levels agree to the kernel's tick in
+//  every case.
+//  * With it, a byte landing at the very instant a compute block starts, by coincidence, is charged
+//  or not
+//    depending on the order the kernel runs that instant's processes in at the packet level: at
+//    most one cycle, in a few cases.
+TEST(Fidelity, AutoEqualsPacketWhenTheOtherDirectionStartsMidMessage) {
+  int handovers = 0, cases = 0, tie_cases = 0;
+  for (double mbps : {20.0, 10.0})
+    for (LinkProtocol protocol : {LinkProtocol::overlapped, LinkProtocol::t414})
+      for (int receiver_delay : {0, 30})
+        for (int reverse_delay = 0; reverse_delay <= 90; reverse_delay += 1) {
+          const Exchange e{mbps, protocol, 16, 5, receiver_delay, reverse_delay, 1};
+          auto run = [&](LinkFidelity links, ComputeFidelity compute) {
+            return in_child([&] { return exchange(e, links, compute); });
+          };
+          const Values packet = run(LinkFidelity::packet, ComputeFidelity::block);
+          const Values automatic = run(LinkFidelity::automatic, ComputeFidelity::block);
+          ASSERT_GE(packet[3], 0) << describe(e) << ": the packet level did not finish";
+          expect_same_results(packet, automatic, describe(e));
+          handovers += int(automatic[14]);
+          ++cases;
+
+          const Values packet_fine = run(LinkFidelity::packet, ComputeFidelity::fine);
+          const Values auto_fine = run(LinkFidelity::automatic, ComputeFidelity::automatic);
+          bool same = true;
+          for (int i = 0; i < kCompared; ++i) {
+            EXPECT_NEAR(packet_fine[i], auto_fine[i], 0.05 + 1e-9)
+                << describe(e) << ", value " << i;
+            same = same && std::abs(packet_fine[i] - auto_fine[i]) < 1e-9;
+          }
+          tie_cases += same ? 0 : 1;
+        }
+  // Most of these start the reverse message while the forward one is in closed form.
+  EXPECT_GT(handovers, cases / 2);
+  EXPECT_LT(tie_cases, cases / 20);
+  RecordProperty("tie_cases", std::to_string(tie_cases) + " of " + std::to_string(cases));
+}
+
+TEST(Fidelity, MessageAndAutoEqualPacketOnAOneWayLink) {
+  for (double mbps : {20.0, 10.0, 5.0})
+    for (LinkProtocol protocol : {LinkProtocol::overlapped, LinkProtocol::t414})
+      for (int receiver_delay : {0, 7, 200})
+        for (std::int64_t bytes : {1, 2, 3, 100}) {
+          Exchange e{mbps, protocol, bytes, 0, receiver_delay, -1, 3};
+          const Values packet = in_child([&] { return exchange(e, LinkFidelity::packet); });
+          ASSERT_GE(packet[1], 0) << describe(e);
+          for (LinkFidelity f : {LinkFidelity::message, LinkFidelity::automatic}) {
+            const Values other = in_child([&] { return exchange(e, f); });
+            expect_same_results(packet, other, describe(e) + " " + std::string(t800::to_string(f)));
+            EXPECT_EQ(other[13], 3) << "every message should run in closed form";
+            EXPECT_EQ(other[14], 0);
+          }
+        }
+}
+
+// Both directions streaming: the acknowledges wait behind the other direction's data, which the
+// closed form does not see -- `message` is faster than the truth, `automatic` is the truth.
+TEST(Fidelity, MessageLevelIgnoresContentionAutoDoesNot) {
+  Exchange e{20, LinkProtocol::overlapped, 4096, 4096, 0, 0, 1};
+  const Values packet = in_child([&] { return exchange(e, LinkFidelity::packet); });
+  const Values automatic = in_child([&] { return exchange(e, LinkFidelity::automatic); });
+  const Values message = in_child([&] { return exchange(e, LinkFidelity::message); });
+  expect_same_results(packet, automatic, "both ways");
+  EXPECT_LT(message[1], 0.9 * packet[1]) << "closed form should miss the contention";
+}
+
+TEST(Fidelity, FineAndAutoComputeAgreeAndDmaStealsCycles) {
+  // P1 computes while its input DMA receives: the stolen cycles lengthen the work.
+  auto computing_receiver = [](ComputeFidelity compute, LinkFidelity links) {
+    return in_child([=] {
+      network::MachineOptions o = core_test::options(20);
+      o.fidelity.compute = compute;
+      o.fidelity.links = links;
+      network::Machine m(core_test::chain(1), o);
+      Values v;
+      v.fill(-1);
+      auto& c = m.channel("c", 0, 1);
+      m.spawn(0, "send", t800::Priority::low, [&](network::Process& p) {
+        p.out(c, {2000, {}, "x"});
+      });
+      m.spawn(1, "receive", t800::Priority::high, [&](network::Process& p) { p.in(c); });
+      m.spawn(1, "work", t800::Priority::low, [&](network::Process& p) {
+        p.compute(100000);  // 5 ms, longer than the transfer and than a timeslice
+        v[0] = p.now_us();
+      });
+      if (!m.run().empty()) return v;
+      v[1] = double(m.transputer(1).cpu().statistics().stolen_cycles);
+      return v;
+    });
+  };
+  const Values block = computing_receiver(ComputeFidelity::block, LinkFidelity::packet);
+  const Values fine = computing_receiver(ComputeFidelity::fine, LinkFidelity::packet);
+  const Values automatic = computing_receiver(ComputeFidelity::automatic, LinkFidelity::packet);
+  const Values auto_message = computing_receiver(ComputeFidelity::automatic, LinkFidelity::message);
+  ASSERT_GE(block[0], 0);
+  EXPECT_EQ(block[1], 0);
+  // One cycle per byte received (t800/timing_table.hpp kLinkDmaCyclesPerByte): 2000 cycles = 100
+  // us.
+  EXPECT_EQ(fine[1], 2000 * t800::timing::kLinkDmaCyclesPerByte);
+  EXPECT_NEAR(fine[0] - block[0], 2000 * t800::timing::kLinkDmaCyclesPerByte * 0.05, 1e-6);
+  EXPECT_NEAR(fine[0], automatic[0], 1e-9);
+  EXPECT_NEAR(fine[0], auto_message[0], 1e-9);
+}
+
+}  // namespace
