@@ -64,6 +64,15 @@ void ProcessorActivity::close(const sc_core::sc_time& end) {
   settle(end.to_seconds() * 1e6);
 }
 
+void ProcessorActivity::credit(double compute_us, double communicate_us, double first_busy_us,
+                               double last_busy_us, const std::vector<Interval>& intervals) {
+  total_us_[int(ProcessorState::compute)] += compute_us;
+  total_us_[int(ProcessorState::communicate)] += communicate_us;
+  if (first_busy_us >= 0 && first_busy_us_ < 0) first_busy_us_ = first_busy_us;
+  if (last_busy_us >= 0 && last_busy_us > last_busy_us_) last_busy_us_ = last_busy_us;
+  if (keep_intervals_) intervals_.insert(intervals_.end(), intervals.begin(), intervals.end());
+}
+
 void LinkActivity::packet(const sc_core::sc_time& start, const sc_core::sc_time& duration, bool data) {
   const double d = duration.to_seconds() * 1e6;
   busy_us_ += d;
@@ -86,6 +95,16 @@ void LinkActivity::message_done(std::int64_t bytes, const std::string& label) {
   // Only now is the message known: its data packets have all been sent once its last ack is in.
   for (std::size_t i = unlabelled_; i < intervals_.size(); ++i)
     if (intervals_[i].label == "data" && !label.empty()) intervals_[i].label = label;
+  unlabelled_ = intervals_.size();
+}
+
+void LinkActivity::credit(std::int64_t bytes, std::int64_t messages, double busy_us,
+                          const std::vector<Interval>& intervals) {
+  bytes_ += bytes;
+  messages_ += messages;
+  busy_us_ += busy_us;
+  if (!keep_intervals_) return;
+  intervals_.insert(intervals_.end(), intervals.begin(), intervals.end());
   unlabelled_ = intervals_.size();
 }
 

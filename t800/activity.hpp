@@ -4,6 +4,7 @@
 // (DESIGN.md: "when no trace is asked for, nothing per-interval is stored").
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,14 @@ class ProcessorActivity {
   void transfer_end();
   void keep_intervals(bool keep) { keep_intervals_ = keep; }
   void close(const sc_core::sc_time& end);  // settles the running state at the end of the simulation
+  // Neither its CPU nor any of its link engines is working for it at this instant.
+  bool idle() const { return state() == ProcessorState::idle; }
+  // Adds the accounting of a stretch of work that was not simulated but is known to be identical to
+  // one that was (a reused trajectory step): busy time by state, the span of work (a time < 0
+  // leaves it as it is; the first busy time is only set when it is not yet), and, when intervals
+  // are kept, the stretch's intervals, already placed in time. Call it while idle.
+  void credit(double compute_us, double communicate_us, double first_busy_us, double last_busy_us,
+              const std::vector<Interval>& intervals = {});
 
   double compute_us() const { return total_us_[int(ProcessorState::compute)]; }
   double communicate_us() const { return total_us_[int(ProcessorState::communicate)]; }
@@ -60,6 +69,11 @@ class LinkActivity {
   // Kept intervals with this message's data (since the previous message) take its label, for traces.
   void message_done(std::int64_t bytes, const std::string& label);
   void keep_intervals(bool keep) { keep_intervals_ = keep; }
+  // Adds the accounting of messages that were not simulated but are known to be identical to ones
+  // that were (a reused trajectory step), with their intervals already placed in time when
+  // intervals are kept.
+  void credit(std::int64_t bytes, std::int64_t messages, double busy_us,
+              const std::vector<Interval>& intervals = {});
 
   std::int64_t bytes() const { return bytes_; }
   std::int64_t messages() const { return messages_; }

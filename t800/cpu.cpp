@@ -91,8 +91,11 @@ sc_time Cpu::slice_limit(const ProcessDescriptor& p, sc_time limit) {
   if (preempt_pending_) limit = std::min(limit, preempt_at_ - now);
   if (!timesliced()) return limit;
   if (!ready_low_.empty()) {
+    // The slice ends between one and two timeslices after dispatch, wherever the clock's ticks
+    // fall: work that ends within one timeslice of dispatch cannot meet it at any phase of the
+    // clock.
+    if (now + limit > p.dispatched_at + kTimeslice) ++stats_.clock_dependent;
     limit = std::min(limit, slice_end(p) - now);
-    ++stats_.clock_dependent;
   }
   if (fidelity_ == ComputeFidelity::fine)
     limit = std::min(limit, kTimeslice * (std::floor(now / kTimeslice) + 1.0) - now);

@@ -37,9 +37,10 @@ struct CpuStatistics {
   std::int64_t dispatches = 0;
   std::int64_t preemptions = 0;
   std::int64_t timeslices = 0;
-  // Compute slices whose end was set by the timeslice clock (another low-priority process was
-  // waiting). The clock ticks at absolute times, so only while this stays unchanged is a stretch of
-  // simulation translation-invariant: the same work started later takes the same time.
+  // Compute slices whose end the timeslice clock could set: another low-priority process waits and
+  // the work runs past one timeslice from dispatch. The clock ticks at absolute times, so only
+  // while this stays unchanged is a stretch of simulation translation-invariant: the same work
+  // started later takes as long.
   std::int64_t clock_dependent = 0;
   std::int64_t stolen_cycles =
       0;  // memory cycles link DMA took from compute (fine and auto fidelity)

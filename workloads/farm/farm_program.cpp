@@ -88,7 +88,11 @@ FarmRound FarmProgram<S>::evaluate(network::Process& p, const dynamics::JointVec
   FarmRound round;
   round.start_us = p.now_us();
   p.compute(work_.master_input, "sin/cos");
-  const std::optional<dynamics::WorkerInput<S>> input = dynamics::make_worker_input<S>(model_, q);
+  // The message's size is the model's (worker_input_reals), whatever it holds; skipping, it holds
+  // nothing the workers read.
+  const std::optional<dynamics::WorkerInput<S>> input =
+      settings_.skip_numerics ? dynamics::WorkerInput<S>{}
+                              : dynamics::make_worker_input<S>(model_, q);
   data.values.assign(work_.tasks.size(), S(0));
   done_by_.assign(workers_.size(), {});
   next_ = 0;
@@ -111,7 +115,7 @@ FarmRound FarmProgram<S>::evaluate(network::Process& p, const dynamics::JointVec
   const std::vector<double> busy_after = workers_busy_now(p.machine());
   for (std::size_t w = 0; w < workers_.size(); ++w) round.busy_in_farm_us.push_back(busy_after[w] - busy_before[w]);
   p.compute(work_.master_assembly, "assemble");
-  dynamics::assemble(subtasks(), qd, data);
+  if (!settings_.skip_numerics) dynamics::assemble(subtasks(), qd, data);
   round.end_us = p.now_us();
   return round;
 }
@@ -205,7 +209,8 @@ void FarmProgram<S>::on_demand_round(network::Process& p, std::size_t w, const d
 template <class S>
 S FarmProgram<S>::run_task(network::Process& p, int t, const dynamics::WorkerInput<S>& input) {
   const FarmTask& task = work_.tasks[t];
-  p.compute(task.mix, task.subtask.name);
+  p.compute(task.mix, task.subtask.name);  // the cost counted at build time, not by evaluating
+  if (settings_.skip_numerics) return S(0);
   return dynamics::evaluate_subtask<S>(model_, task.subtask, input);
 }
 

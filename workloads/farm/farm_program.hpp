@@ -25,6 +25,10 @@ struct FarmSettings {
   std::string schedule = "static";  // static | on-demand | explicit
   std::string allocation;           // for explicit
   int buffer = 2;                   // on-demand: subtasks in flight per worker
+  // Timing only (fidelity.skip_numerics): no subtask is evaluated and nothing is assembled; every
+  // message keeps its size and every piece of work its cost, which come from the operations counted
+  // once when the farm is built (farm_work), never from evaluating. The values stay zero.
+  bool skip_numerics = false;
 };
 
 // The timing of one round, as the master saw it.
@@ -46,6 +50,10 @@ class FarmProgram {
                      dynamics::DynamicsData<S>& data);
   // Called from the master's process after the last evaluation: every worker ends.
   void finish(network::Process& master);
+
+  // Before build(): see FarmSettings::skip_numerics.
+  void set_skip_numerics(bool skip) { settings_.skip_numerics = skip; }
+  bool skips_numerics() const { return settings_.skip_numerics; }
 
   const FarmWork& work() const { return work_; }
   const std::vector<int>& workers() const { return workers_; }

@@ -68,8 +68,7 @@ double growth_limit(const Params& p, t800::Precision precision) {
 
 }  // namespace
 
-std::unique_ptr<Workload> make_elimination(const WorkloadContext& context) {
-  const Params& p = context.params;
+PipelineSettings elimination_settings(const Params& p) {
   PipelineSettings s;
   s.m = int(p.integer("m"));
   s.precision = *t800::parse_precision(p.text("precision"));
@@ -77,7 +76,17 @@ std::unique_ptr<Workload> make_elimination(const WorkloadContext& context) {
   s.rule.threshold = p.real("pivot_threshold");
   s.rule.growth_limit = growth_limit(p, s.precision);
   s.overlap = p.flag("overlap");
-  return std::make_unique<EliminationPipeline>(s, input_system(context), context.topology);
+  s.buffered = p.flag("buffered");
+  return s;
+}
+
+std::unique_ptr<Workload> make_elimination(const WorkloadContext& context) {
+  return make_elimination_with(context, elimination_settings(context.params));
+}
+
+std::unique_ptr<Workload> make_elimination_with(const WorkloadContext& context,
+                                                const PipelineSettings& settings) {
+  return std::make_unique<EliminationPipeline>(settings, input_system(context), context.topology);
 }
 
 std::string elimination_topology(int m) {

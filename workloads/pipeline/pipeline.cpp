@@ -1,5 +1,6 @@
 #include "workloads/pipeline/pipeline.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace workloads {
@@ -107,6 +108,14 @@ ResultValue EliminationPipeline::results(const network::Machine& machine) const 
   r.set("tp_ms", o.tp_us() / 1000.0);
   r.set("tp_us", o.tp_us());
   r.set("input_us", o.start_us - o.input_start_us);
+  // Other windows one might read as Table 6's Tp: L1 having the system until L4 has every row of
+  // U (Tp without the back substitution), and level 2's own window (the first pivot row reaching
+  // a level-2 processor until the last row leaves one); 0 when the round failed before.
+  r.set("elimination_us", o.eliminated_us > 0 ? o.eliminated_us - o.start_us : 0.0);
+  r.set("level2_window_us",
+        o.level2_first_us >= 0 ? std::max(0.0, o.level2_last_us - o.level2_first_us) : 0.0);
+  r.set("buffered", s.buffered);
+  r.set("overlap", s.overlap);
   ResultValue qdd = ResultValue::list();
   for (double v : o.qdd) qdd.push(v);
   r.set("qdd", qdd);

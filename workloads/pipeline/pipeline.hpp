@@ -11,6 +11,8 @@
 //   L4       back substitution: q̈.
 // With workload.overlap the steps are pipelined: L3 streams each checked row straight back and L1
 // starts the next step as soon as its pivot choice has the rows it reads (pipeline_program.hpp).
+// PipelineSettings::buffered runs each level-2 processor as a buffered stage (input, eliminator,
+// output in PAR); docs/table6.md compares these structures against Table 6.
 // The levels are PipelineProgram (pipeline_program.hpp) serving one system from the host; the
 // trajectory workload runs the same program for every evaluation.
 // Every level calls the same pieces as the sequential solver (workloads/elimination/gauss.hpp), so
@@ -57,6 +59,12 @@ class EliminationPipeline : public Workload {
 
 // The "elimination" workload kind from a scene's parameters (catalog.cpp).
 std::unique_ptr<Workload> make_elimination(const WorkloadContext& context);
+// The pipeline's settings the parameters give (workload.m, precision, pivoting, ...), and the
+// workload with settings of the caller's (a structure no scene parameter selects yet, e.g.
+// PipelineSettings::buffered; the system still comes from the parameters).
+PipelineSettings elimination_settings(const Params& params);
+std::unique_ptr<Workload> make_elimination_with(const WorkloadContext& context,
+                                                const PipelineSettings& settings);
 
 // ---- Table 6 ----
 // The scene to run: configs/scenes/elimination.toml (relative to the repository root).

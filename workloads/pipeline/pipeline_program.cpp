@@ -141,6 +141,7 @@ class PipelineProgram<T>::Levels {
     to_l4_ = &machine.channel("L3->L4", nodes.l3, nodes.l4);
     if (serve == Serve::until_finish) reply_ = &machine.channel("qdd", nodes.l4, client);
     const auto low = t800::Priority::low;
+    for (int e = 0; e < shape.m; ++e) e_buffers_.push_back(std::make_unique<Shared>());
     machine.spawn(nodes.l1, "level1", low, [this](Process& p) { loop(p, &Levels::level1); });
     for (int e = 0; e < shape.m; ++e)
       machine.spawn(nodes.e[std::size_t(e)], "level2", low, [this, e](Process& p) {
@@ -438,6 +439,11 @@ class PipelineProgram<T>::Levels {
         if (e == 0 || e_behind_fan_in_[std::size_t(e)]) p.out(out, pivot_message);
         return false;
       }
+      note_level2(p.now_us(), true);
+      if (settings.buffered) {
+        eliminate_buffered(p, e, pivot_message, rows);
+        continue;
+      }
       std::vector<t800::Message> first(1);
       if (e == 0) {
         // E1 forwards the pivot row to L3 while it takes its first row.
@@ -451,9 +457,74 @@ class PipelineProgram<T>::Levels {
         Row<C> done = run_piece(p, "eliminate",
                                 [&] { return elimination::eliminate(row.values, pivot.row); });
         p.out(out, {reals(done.size()), RowMessage{row.index, std::move(done)}, "row"});
+        note_level2(p.now_us(), false);
       }
     }
     return true;
+  }
+
+  // Buffered level 2, one step: input, eliminator and output in PAR, joined by one-row buffers.
+  // The input process takes row r once the eliminator has started on row r - 1 (it then holds one
+  // row), and the eliminator hands row r on once the output process has taken row r - 1; the
+  // buffers are the processes' own variables, so handing a row on costs nothing here (as Shared).
+  void eliminate_buffered(Process& p, int e, const t800::Message& pivot_message,
+                          const std::vector<std::size_t>& rows) {
+    network::Channel& in = *e_in_[std::size_t(e)];
+    network::Channel& out = *e_out_[std::size_t(e)];
+    const auto& pivot = std::any_cast<const PivotMessage&>(pivot_message.payload);
+    Shared& buffer = *e_buffers_[std::size_t(e)];
+    const std::size_t count = rows.size();
+    std::vector<t800::Message> taken(count);
+    std::vector<RowMessage> done(count);
+    std::size_t received = 0, started = 0, finished = 0, sent = 0;
+    std::vector<Process::Body> branches;
+    if (count > 0) {
+      branches.push_back([&](Process& q) {  // input
+        for (std::size_t r = 0; r < count; ++r) {
+          buffer.wait_until(q, [&] { return started >= r; });
+          taken[r] = q.in(in);
+          ++received;
+          buffer.notify();
+        }
+      });
+      branches.push_back([&](Process& q) {  // eliminator
+        for (std::size_t r = 0; r < count; ++r) {
+          buffer.wait_until(q, [&] { return received > r; });
+          ++started;
+          buffer.notify();
+          const auto& row = std::any_cast<const RowMessage&>(taken[r].payload);
+          Row<C> values = run_piece(q, "eliminate",
+                                    [&] { return elimination::eliminate(row.values, pivot.row); });
+          buffer.wait_until(q, [&] { return sent >= r; });
+          done[r] = RowMessage{row.index, std::move(values)};
+          ++finished;
+          buffer.notify();
+        }
+      });
+    }
+    branches.push_back([&](Process& q) {  // output; E1 forwards the pivot row first
+      if (e == 0) q.out(out, pivot_message);
+      for (std::size_t r = 0; r < count; ++r) {
+        buffer.wait_until(q, [&] { return finished > r; });
+        ++sent;
+        buffer.notify();
+        RowMessage row = std::move(done[r]);
+        const std::int64_t bytes = reals(row.values.size());
+        q.out(out, {bytes, std::move(row), "row"});
+        note_level2(q.now_us(), false);
+      }
+    });
+    par(p, branches);
+  }
+
+  // Level 2's window (PipelineOutcome::level2_first_us, level2_last_us).
+  void note_level2(double now_us, bool first) {
+    if (first) {
+      if (outcome.level2_first_us < 0 || now_us < outcome.level2_first_us)
+        outcome.level2_first_us = now_us;
+    } else {
+      outcome.level2_last_us = std::max(outcome.level2_last_us, now_us);
+    }
   }
 
   // ---- level 3 ----
@@ -586,6 +657,7 @@ class PipelineProgram<T>::Levels {
       unstable = unstable || pivot.unstable;
       upper.push_back(std::move(pivot.row));
     }
+    outcome.eliminated_us = p.now_us();
     const Row<C> x =
         run_piece(p, "back substitution", [&] { return elimination::back_substitute(upper); });
     outcome.end_us = p.now_us();
@@ -627,6 +699,7 @@ class PipelineProgram<T>::Levels {
   int handed_ = 0;           // steps L1 has handed out
   bool l1_stopped_ = false;  // L1 gave up before handing out step handed_
   Shared l1_, l3_;
+  std::vector<std::unique_ptr<Shared>> e_buffers_;  // buffered level 2: one per processor
 };
 
 template <class T>

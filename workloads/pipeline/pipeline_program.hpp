@@ -27,6 +27,11 @@ struct PipelineSettings {
   // and L1 starts step k + 1 as soon as it has the rows its pivot choice needs. false = strict
   // steps: L3 returns the whole reduced matrix after checking it.
   bool overlap = false;
+  // Buffered level 2: each level-2 processor runs an input process, the eliminator and an output
+  // process in PAR, joined by one-row buffers (the classic occam buffered stage), so the next row
+  // comes in and the previous one goes out while a row is eliminated. false = one process that
+  // takes a row, eliminates it and sends it on before it takes the next.
+  bool buffered = false;
 };
 
 // What one round produced, as the levels saw it.
@@ -39,7 +44,10 @@ struct PipelineOutcome {
   int interchanges = 0;
   double growth = 1;
   double input_start_us = 0, start_us = 0, end_us = 0;
-  double returned_us = 0;             // the client has q̈ (serve = until_finish only)
+  double returned_us = 0;    // the client has q̈ (serve = until_finish only)
+  double eliminated_us = 0;  // L4 has every row of U (back substitution starts)
+  // Level 2's window: the first pivot row reaching a level-2 processor, the last row leaving one.
+  double level2_first_us = -1, level2_last_us = 0;
   std::vector<double> step_start_us;  // when L1 began each step's pivot search
   double tp_us() const { return end_us - start_us; }
 };

@@ -4,10 +4,15 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
+#include <systemc>
+
+#include "t800/activity.hpp"
 #include "workloads/dynamics/counted.hpp"
+#include "workloads/elimination/system.hpp"
 #include "workloads/farm/farm_program.hpp"
 #include "workloads/integration/integrators.hpp"
 #include "workloads/integration/torque.hpp"
@@ -117,6 +122,151 @@ struct StepTimes {
   double step_us = 0, dynamics_us = 0, solve_us = 0, integration_us = 0, communication_us = 0;
 };
 
+// Simulated microseconds between two instants, from their exact difference (so that a step of the
+// same length gives the same number wherever it lies in time).
+double us_between(const sc_core::sc_time& from, const sc_core::sc_time& to) {
+  return (to - from).to_seconds() * 1e6;
+}
+
+double to_us(const sc_core::sc_time& t) {
+  return t.to_seconds() * 1e6;
+}
+
+// ---- Step reuse (fidelity.reuse_steps) ----
+// What one simulated step did to the machine's accounting, relative to the step's start.
+struct ProcessorDelta {
+  double compute_us = 0, communicate_us = 0;
+  double first_busy_us = -1;  // offset of the processor's first work ever, when it was in this step
+  double last_busy_us = -1;   // offset of the last time it stopped working in this step (-1: idle)
+  std::vector<t800::Interval> intervals;  // traces only; times from the step's start
+};
+
+struct LinkDelta {
+  std::int64_t bytes = 0, messages = 0;
+  double busy_us = 0;
+  std::vector<t800::Interval> intervals;
+};
+
+struct StepDelta {
+  sc_core::sc_time duration;
+  StepTimes times;
+  std::vector<ProcessorDelta> processors;
+  std::vector<LinkDelta> links;  // both directions of every link, in Machine::links() order
+};
+
+// The accounting at a step's start.
+struct Snapshot {
+  sc_core::sc_time at;
+  std::vector<double> compute_us, communicate_us, first_busy_us, last_busy_us;
+  std::vector<std::size_t> processor_intervals;
+  std::vector<std::int64_t> bytes, messages;
+  std::vector<double> link_busy_us;
+  std::vector<std::size_t> link_intervals;
+  std::int64_t clock = 0;  // every CPU's clock-dependent slices and timeslice ends, summed
+};
+
+std::int64_t clock_events(network::Machine& m) {
+  std::int64_t n = 0;
+  for (int i = 0; i < m.processors(); ++i) {
+    const t800::CpuStatistics& s = m.transputer(i).cpu().statistics();
+    n += s.clock_dependent + s.timeslices;
+  }
+  return n;
+}
+
+Snapshot snapshot(network::Machine& m) {
+  Snapshot s;
+  s.at = sc_core::sc_time_stamp();
+  for (int i = 0; i < m.processors(); ++i) {
+    const t800::ProcessorActivity& a = m.transputer(i).activity();
+    s.compute_us.push_back(a.compute_us());
+    s.communicate_us.push_back(a.communicate_us());
+    s.first_busy_us.push_back(a.first_busy_us());
+    s.last_busy_us.push_back(a.last_busy_us());
+    s.processor_intervals.push_back(a.intervals().size());
+  }
+  for (const auto& info : m.links())
+    for (int d = 0; d < 2; ++d) {
+      const t800::LinkActivity& a = info.link->activity(d);
+      s.bytes.push_back(a.bytes());
+      s.messages.push_back(a.messages());
+      s.link_busy_us.push_back(a.busy_us());
+      s.link_intervals.push_back(a.intervals().size());
+    }
+  s.clock = clock_events(m);
+  return s;
+}
+
+std::vector<t800::Interval> shifted(const std::vector<t800::Interval>& from, std::size_t first,
+                                    double by_us) {
+  std::vector<t800::Interval> out(from.begin() + std::ptrdiff_t(first), from.end());
+  for (t800::Interval& i : out) {
+    i.start_us += by_us;
+    i.end_us += by_us;
+  }
+  return out;
+}
+
+// The step from `before` to now, as deltas.
+StepDelta step_delta(network::Machine& m, const Snapshot& before, const StepTimes& times) {
+  StepDelta d;
+  d.duration = sc_core::sc_time_stamp() - before.at;
+  d.times = times;
+  const double start_us = to_us(before.at);
+  for (int i = 0; i < m.processors(); ++i) {
+    const std::size_t k = std::size_t(i);
+    const t800::ProcessorActivity& a = m.transputer(i).activity();
+    ProcessorDelta p;
+    p.compute_us = a.compute_us() - before.compute_us[k];
+    p.communicate_us = a.communicate_us() - before.communicate_us[k];
+    if (before.first_busy_us[k] < 0 && a.first_busy_us() >= 0)
+      p.first_busy_us = a.first_busy_us() - start_us;
+    if (a.last_busy_us() != before.last_busy_us[k]) p.last_busy_us = a.last_busy_us() - start_us;
+    p.intervals = shifted(a.intervals(), before.processor_intervals[k], -start_us);
+    d.processors.push_back(std::move(p));
+  }
+  std::size_t k = 0;
+  for (const auto& info : m.links())
+    for (int dir = 0; dir < 2; ++dir, ++k) {
+      const t800::LinkActivity& a = info.link->activity(dir);
+      LinkDelta l;
+      l.bytes = a.bytes() - before.bytes[k];
+      l.messages = a.messages() - before.messages[k];
+      l.busy_us = a.busy_us() - before.link_busy_us[k];
+      l.intervals = shifted(a.intervals(), before.link_intervals[k], -start_us);
+      d.links.push_back(std::move(l));
+    }
+  return d;
+}
+
+// Credits a recorded step to the accounting as if it had just run from `start`.
+void credit(network::Machine& m, const StepDelta& d, const sc_core::sc_time& start) {
+  const double start_us = to_us(start);
+  auto at = [start_us](double offset) { return offset < 0 ? -1.0 : start_us + offset; };
+  for (int i = 0; i < m.processors(); ++i) {
+    const ProcessorDelta& p = d.processors[std::size_t(i)];
+    m.transputer(i).activity().credit(p.compute_us, p.communicate_us, at(p.first_busy_us),
+                                      at(p.last_busy_us), shifted(p.intervals, 0, start_us));
+  }
+  std::size_t k = 0;
+  for (const auto& info : m.links())
+    for (int dir = 0; dir < 2; ++dir, ++k) {
+      const LinkDelta& l = d.links[k];
+      info.link->activity(dir).credit(l.bytes, l.messages, l.busy_us,
+                                      shifted(l.intervals, 0, start_us));
+    }
+}
+
+// Empty when nothing is under way: every processor idle (no compute, no link transfer for it) and
+// every link quiet, so what happens from here on does not depend on the past.
+std::string unquiet(network::Machine& m) {
+  for (int i = 0; i < m.processors(); ++i)
+    if (!m.transputer(i).activity().idle()) return m.node_name(i) + " was busy";
+  for (const auto& info : m.links())
+    if (!info.link->quiet()) return "link " + info.name + " was not quiet";
+  return {};
+}
+
 struct StepRecord {
   double t = 0;
   JointVector q, qd, tau;
@@ -150,9 +300,17 @@ class Trajectory : public Workload {
   }
 
   void build(network::Machine& m) override {
-    farm_.build(m);
+    farm_.build(m);  // never skips numerics: a trajectory integrates its numbers
     pipeline_.build(m, master_, Serve::until_finish);
     integrator_mix_ = to_operation_mix(integrator_ops());
+    subtasks_ = farm_.subtasks();
+    skip_numerics_asked_ = m.options().fidelity.skip_numerics;
+    if (!m.options().fidelity.reuse_steps)
+      reuse_off_ = "fidelity.reuse_steps = false";
+    else if (m.options().fidelity.compute == t800::ComputeFidelity::fine)
+      reuse_off_ =
+          "compute fidelity 'fine' wakes every CPU at the absolute timeslice ticks: no step is "
+          "translation-invariant";
     auto& state = m.channel("state", network::Machine::kHost, master_);
     m.spawn(network::Machine::kHost, "host", t800::Priority::low, [&state](Process& p) {
       p.out(state, {2 * dynamics::kJoints * std::int64_t(sizeof(S)), {}, "initial state"});
@@ -183,7 +341,7 @@ class Trajectory : public Workload {
       for (int n = 1; n <= s_.steps; ++n) {
         const double t = (n - 1) * s_.dt;
         StepRecord row{t, wide(x.q), wide(x.qd), torque(t, wide(x.q), wide(x.qd)), {}};
-        x = step(p, t, x, row.times);
+        x = advance(p, t, x, row.times);
         records_.push_back(row);
         if (!check_limits(wide(x.q), n) && s_.stop_at_limits) break;
       }
@@ -192,25 +350,142 @@ class Trajectory : public Workload {
     }
     const double t = double(records_.size()) * s_.dt;
     records_.push_back({t, wide(x.q), wide(x.qd), torque(t, wide(x.q), wide(x.qd)), {}});
+    fresh_slice(p);  // the end is a step boundary too
     farm_.finish(p);
     pipeline_.finish(p);
   }
 
   static JointVector wide(const Vec& v) { return v.template cast<double>(); }
 
+  // The sequential numerics of one step (bit-identical to the farm's and the pipeline's: the same
+  // functions in the same order, tests/trajectory) and the step's signature: per evaluation, the
+  // solver's status and the original row of every pivot. Those fix every data-dependent cost and
+  // branch of a step: the rows simple pivoting tests and the interchanges (both follow from the
+  // pivot rows), a failure; the farm (a fixed allocation, costs counted once), τ, the right-hand
+  // side and the integrator have none.
+  struct Sequential {
+    bool solved = true;
+    integration::State<S> next;
+    std::vector<int> signature;
+  };
+
+  // One step, simulated or reused. The master takes the CPU afresh at every step boundary (a
+  // zero-time deschedule and reschedule: its timeslice starts there, whatever came before), so a
+  // reused step leaves the scheduler as a simulated one does.
+  integration::State<S> advance(Process& p, double t, const integration::State<S>& x,
+                                StepTimes& times) {
+    fresh_slice(p);
+    if (!reuse_off_.empty()) {
+      ++simulated_;
+      return step(p, t, x, times);
+    }
+    network::Machine& m = p.machine();
+    // The step's numbers by the sequential numerics, and with them its signature: every
+    // data-dependent branch of the step.
+    const Sequential seq = sequential(t, x);
+    std::string why = seq.solved ? unquiet(m) : "the sequential solve failed";
+    if (!why.empty() && seq.solved) why += " at the step's start";
+    if (why.empty()) {
+      const auto known = recorded_.find(seq.signature);
+      if (known != recorded_.end()) {
+        replay(p, known->second, times);
+        ++reused_;
+        return seq.next;
+      }
+    }
+    const Snapshot before = snapshot(m);
+    simulated_signature_.clear();
+    ++simulated_;
+    integration::State<S> next;
+    try {
+      next = step(p, t, x, times);
+    } catch (const SolveFailed&) {
+      ++simulated_because_[why.empty() ? "the pipeline's solve failed" : why];
+      throw;
+    }
+    if (why.empty()) why = invariance(m, before, seq, next);
+    if (why.empty()) {
+      recorded_.emplace(seq.signature, step_delta(m, before, times));
+      why = "the first step of its signature (recorded)";
+    }
+    ++simulated_because_[why];
+    return next;
+  }
+
+  static void fresh_slice(Process& p) {
+    p.deschedule();
+    p.reschedule();
+  }
+
+  // Why the step just simulated may not stand for later steps of its signature; empty when it may.
+  std::string invariance(network::Machine& m, const Snapshot& before, const Sequential& seq,
+                         const integration::State<S>& next) const {
+    if (clock_events(m) != before.clock)
+      return "a CPU's timeslice clock was involved (t800::CpuStatistics clock_dependent or "
+             "timeslices changed): the step is not translation-invariant";
+    const std::string busy = unquiet(m);
+    if (!busy.empty()) return busy + " at the step's end";
+    if (simulated_signature_ != seq.signature)
+      return "the pipeline's pivots differ from the sequential solver's";
+    for (int i = 0; i < dynamics::kJoints; ++i)
+      if (!(next.q(i) == seq.next.q(i) && next.qd(i) == seq.next.qd(i)))
+        return "the simulated state differs from the sequential numerics'";
+    return {};
+  }
+
+  // A step identical to a recorded one: the master lets the recorded duration pass (every other
+  // process stays blocked, waiting for input, as it would be between steps), and the recorded work
+  // is credited to every processor and link.
+  void replay(Process& p, const StepDelta& d, StepTimes& times) {
+    const sc_core::sc_time start = sc_core::sc_time_stamp();
+    sc_core::wait(d.duration);
+    credit(p.machine(), d, start);
+    times = d.times;
+  }
+
+  Sequential sequential(double t, const integration::State<S>& x) const {
+    Sequential out;
+    const double* offsets = integration::stage_offsets(s_.method);
+    int stage = 0;
+    auto f = [&](const Vec& q, const Vec& qd) {
+      const double at = t + offsets[stage++] * s_.dt;
+      const JointVector qw = wide(q), qdw = wide(qd);
+      const elimination::LinearSystem<S> system =
+          elimination::dynamics_system<S>(model_, subtasks_, qw, qdw, torque(at, qw, qdw));
+      const elimination::Solution<S> solution =
+          elimination::solve(system.a, system.b, s_.pipeline.rule);
+      append_signature(out.signature, solution.status, solution.pivot_rows);
+      Vec qdd = Vec::Zero();
+      if (!elimination::solved(solution.status)) {
+        out.solved = false;
+        return qdd;
+      }
+      for (int i = 0; i < dynamics::kJoints; ++i) qdd(i) = solution.x[std::size_t(i)];
+      return qdd;
+    };
+    out.next = integration::step(s_.method, x, S(s_.dt), f);
+    return out;
+  }
+
+  static void append_signature(std::vector<int>& signature, elimination::Status status,
+                               const std::vector<int>& pivot_rows) {
+    signature.push_back(int(status));
+    signature.insert(signature.end(), pivot_rows.begin(), pivot_rows.end());
+  }
+
   integration::State<S> step(Process& p, double t, const integration::State<S>& x,
                              StepTimes& times) {
-    const double start = p.now_us();
+    const sc_core::sc_time start = sc_core::sc_time_stamp();
     const double* offsets = integration::stage_offsets(s_.method);
     int stage = 0;
     auto f = [&](const Vec& q, const Vec& qd) {
       return acceleration(p, t + offsets[stage++] * s_.dt, q, qd, times);
     };
     const integration::State<S> next = integration::step(s_.method, x, S(s_.dt), f);
-    const double before = p.now_us();
+    const sc_core::sc_time before = sc_core::sc_time_stamp();
     p.compute(integrator_mix_, "integrate");
-    times.integration_us += p.now_us() - before;
-    times.step_us = p.now_us() - start;
+    times.integration_us += us_between(before, sc_core::sc_time_stamp());
+    times.step_us = us_between(start, sc_core::sc_time_stamp());
     times.communication_us =
         times.step_us - times.dynamics_us - times.solve_us - times.integration_us;
     return next;
@@ -218,8 +493,9 @@ class Trajectory : public Workload {
 
   // One evaluation: τ, the farm's D, c, h, the right-hand side, the pipeline's q̈.
   Vec acceleration(Process& p, double t, const Vec& q, const Vec& qd, StepTimes& times) {
-    const FarmRound round = farm_.evaluate(p, wide(q), wide(qd), data_);
-    times.dynamics_us += round.end_us - round.start_us;
+    const sc_core::sc_time round_start = sc_core::sc_time_stamp();
+    farm_.evaluate(p, wide(q), wide(qd), data_);
+    times.dynamics_us += us_between(round_start, sc_core::sc_time_stamp());
     dynamics::OpCounts ops;
     Vec rhs;
     {
@@ -230,9 +506,9 @@ class Trajectory : public Workload {
       for (int i = 0; i < dynamics::kJoints; ++i) rhs(i) = r(i).value();
       ops = tally.counts();
     }
-    const double before = p.now_us();
+    const sc_core::sc_time before = sc_core::sc_time_stamp();
     p.compute(to_operation_mix(ops), "right-hand side");
-    times.integration_us += p.now_us() - before;
+    times.integration_us += us_between(before, sc_core::sc_time_stamp());
     return solve(p, rhs, times);
   }
 
@@ -242,6 +518,7 @@ class Trajectory : public Workload {
       throw SolveFailed("the pipeline failed at t = " + std::to_string(p.now_us()) +
                         " us: " + o.failure);
     times.solve_us += o.tp_us();
+    append_signature(simulated_signature_, o.status, o.pivot_rows);
     Vec qdd;
     for (int i = 0; i < dynamics::kJoints; ++i) qdd(i) = S(o.qdd[std::size_t(i)]);
     return qdd;
@@ -280,6 +557,7 @@ class Trajectory : public Workload {
   }
 
   void write_csv() const;
+  ResultValue reuse_report() const;
   ResultValue split(const std::vector<StepRecord>& steps) const;
 
   const dynamics::RobotModel& model_;
@@ -288,7 +566,16 @@ class Trajectory : public Workload {
   FarmProgram<S> farm_;
   PipelineProgram<S> pipeline_;
   t800::OperationMix integrator_mix_;
+  std::vector<dynamics::Subtask> subtasks_;  // the farm's, in its order
   dynamics::DynamicsData<S> data_;
+  bool skip_numerics_asked_ = false;
+  // Step reuse: why it is off for the whole run (empty: on), the recorded steps by signature, the
+  // pivots the pipeline reported in the step being simulated, and the counts for the report.
+  std::string reuse_off_;
+  std::map<std::vector<int>, StepDelta> recorded_;
+  std::vector<int> simulated_signature_;
+  std::int64_t simulated_ = 0, reused_ = 0;
+  std::map<std::string, std::int64_t> simulated_because_;
   std::vector<StepRecord> records_;  // one per step, and the final state
   std::vector<LimitViolation> violations_;
   std::array<bool, dynamics::kJoints> outside_{};
@@ -299,6 +586,29 @@ class Trajectory : public Workload {
 ResultValue joint_values(const JointVector& v) {
   ResultValue out = ResultValue::list();
   for (int i = 0; i < dynamics::kJoints; ++i) out.push(v(i));
+  return out;
+}
+
+// How many steps were simulated and how many reused, and why steps were simulated.
+template <class S>
+ResultValue Trajectory<S>::reuse_report() const {
+  ResultValue out;
+  out.set("enabled", reuse_off_.empty());
+  if (!reuse_off_.empty()) out.set("refused", reuse_off_);
+  out.set("simulated_steps", simulated_);
+  out.set("reused_steps", reused_);
+  out.set("signatures_recorded", std::int64_t(recorded_.size()));
+  ResultValue because = ResultValue::list();
+  for (const auto& [why, count] : simulated_because_) {
+    ResultValue row;
+    row.set("reason", why);
+    row.set("steps", count);
+    because.push(row);
+  }
+  out.set("simulated_because", because);
+  out.set(
+      "traces",
+      "a reused step's intervals are the recorded step's, shifted in time (traces keep reuse on)");
   return out;
 }
 
@@ -357,6 +667,11 @@ ResultValue Trajectory<S>::results(const network::Machine&) const {
   r.set("limit_violations", exits);
   r.set("steps_outside_limits", steps_outside_);
   if (!failure_.empty()) r.set("failure", failure_);
+  r.set("step_reuse", reuse_report());
+  if (skip_numerics_asked_)
+    r.set("numerics",
+          "computed: fidelity.skip_numerics is ignored, a trajectory integrates its numbers and "
+          "its pivots can change the schedule");
   r.set("final_q", joint_values(records_.back().q));
   r.set("final_qd", joint_values(records_.back().qd));
   if (!s_.output_csv.empty()) {
