@@ -176,11 +176,34 @@ Process& Machine::spawn(int node, const std::string& name, t800::Priority priori
                         Process::Body body) {
   processes_.push_back(std::make_unique<Process>(*this, node, name, priority));
   Process* p = processes_.back().get();
-  if (sc_core::sc_is_running())
-    sc_core::sc_spawn([p, body] { run_body(p, body); }, sc_core::sc_gen_unique_name("proc"));
-  else
+  if (!sc_core::sc_is_running()) {
     pending_.emplace_back(p, std::move(body));
+    return *p;
+  }
+  if (idle_threads_.empty()) {
+    threads_.push_back(std::make_unique<PooledThread>());
+    PooledThread* t = threads_.back().get();
+    t->process = p;
+    t->body = std::move(body);
+    sc_core::sc_spawn([this, t] { pooled_thread(*t); }, sc_core::sc_gen_unique_name("proc"));
+    return *p;
+  }
+  PooledThread* t = idle_threads_.back();
+  idle_threads_.pop_back();
+  t->process = p;
+  t->body = std::move(body);
+  t->assigned.notify();  // runnable now, as a newly spawned thread would be
   return *p;
+}
+
+void Machine::pooled_thread(PooledThread& t) {
+  for (;;) {
+    while (!t.process) sc_core::wait(t.assigned);
+    run_body(t.process, t.body);
+    t.process = nullptr;
+    t.body = nullptr;
+    idle_threads_.push_back(&t);
+  }
 }
 
 std::vector<BlockedProcess> Machine::run() {

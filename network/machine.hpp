@@ -1,8 +1,9 @@
-// A topology elaborated into SystemC: one Transputer per processor, one Link per connection (and one to the
-// host PC), the channels workloads declare, and the router processes that routed channels need.
+// A topology elaborated into SystemC: one Transputer per processor, one Link per connection (and
+// one to the host PC), the channels workloads declare, and the router processes that routed
+// channels need.
 //
-// Use: declare channels, spawn processes, then run(). One Machine (one simulation) per OS process: SystemC
-// cannot be restarted (DESIGN.md).
+// Use: declare channels, spawn processes, then run(). One Machine (one simulation) per OS process:
+// SystemC cannot be restarted (DESIGN.md).
 #pragma once
 
 #include <map>
@@ -44,11 +45,12 @@ class Machine {
 
   // Declares a channel from node `from` to node `to` (processor indices or kHost).
   Channel& channel(const std::string& name, int from, int to);
-  // Places a process on a node; it starts when the simulation starts (or at once, if it is running).
+  // Places a process on a node; it starts when the simulation starts (or at once, if it is
+  // running).
   Process& spawn(int node, const std::string& name, t800::Priority priority, Process::Body body);
 
-  // Runs until every process has ended or nothing can happen any more; returns the processes left blocked
-  // (empty on a clean end: a deadlock otherwise).
+  // Runs until every process has ended or nothing can happen any more; returns the processes left
+  // blocked (empty on a clean end: a deadlock otherwise).
   std::vector<BlockedProcess> run();
 
   const Topology& topology() const { return topology_; }
@@ -68,7 +70,8 @@ class Machine {
   const std::vector<std::unique_ptr<Channel>>& channels() const { return channels_; }
   double simulated_us() const { return end_us_; }
 
-  // The link from node a to its neighbour b, and a's end of it; nullopt when they are not neighbours.
+  // The link from node a to its neighbour b, and a's end of it; nullopt when they are not
+  // neighbours.
   std::optional<std::pair<t800::Link*, int>> link_between(int a, int b) const;
   // The processes running on nodes, for reports.
   const std::vector<std::unique_ptr<Process>>& processes() const { return processes_; }
@@ -88,6 +91,17 @@ class Machine {
   std::vector<std::unique_ptr<Channel>> channels_;
   std::vector<std::unique_ptr<Process>> processes_;
   std::vector<std::pair<Process*, Process::Body>> pending_;
+  // SystemC threads that ran a process spawned during the run (a PAR's branch) and wait for the
+  // next: creating a thread allocates and maps a stack, the most expensive thing a PAR would
+  // otherwise do.
+  struct PooledThread {
+    Process* process = nullptr;
+    Process::Body body;
+    sc_core::sc_event assigned;
+  };
+  void pooled_thread(PooledThread& t);
+  std::vector<std::unique_ptr<PooledThread>> threads_;
+  std::vector<PooledThread*> idle_threads_;
   std::vector<int> ended_;
   bool finalised_ = false;
   double end_us_ = 0;

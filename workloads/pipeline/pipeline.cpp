@@ -61,16 +61,16 @@ EliminationPipeline::EliminationPipeline(const PipelineSettings& settings,
   const int available = level2_count(topology);
   if (s.m == 0) s.m = available;
   if (s.m < 1 || s.m > available)
-    throw std::invalid_argument("elimination: workload.m = " + std::to_string(settings.m) +
-                                " but the topology " + topology.name + " has " +
-                                std::to_string(available) +
-                                " level-2 processors (E1, E2, ...); give workload.m from 1 to " +
-                                std::to_string(available) + ", or a topology with more: " +
-                                (settings.m >= 1 && settings.m <= 5
-                                     ? "--set network.topology=../topologies/elimination-m" +
-                                           std::to_string(settings.m) + ".toml"
-                                     : std::string("topologies ship for m = 1..5 "
-                                                   "(configs/topologies/elimination-m1..m5.toml)")));
+    throw std::invalid_argument(
+        "elimination: workload.m = " + std::to_string(settings.m) + " but the topology " +
+        topology.name + " has " + std::to_string(available) +
+        " level-2 processors (E1, E2, ...); give workload.m from 1 to " +
+        std::to_string(available) + ", or a topology with more: " +
+        (settings.m >= 1 && settings.m <= 5
+             ? "--set network.topology=../topologies/elimination-m" + std::to_string(settings.m) +
+                   ".toml"
+             : std::string("topologies ship for m = 1..5 "
+                           "(configs/topologies/elimination-m1..m5.toml)")));
   const PipelineNodes nodes = find_pipeline_nodes(topology, s.m);
   if (s.precision == t800::Precision::real64)
     engine_ = std::make_unique<EngineT<double>>(s, system, nodes);
@@ -116,6 +116,11 @@ ResultValue EliminationPipeline::results(const network::Machine& machine) const 
         o.level2_first_us >= 0 ? std::max(0.0, o.level2_last_us - o.level2_first_us) : 0.0);
   r.set("buffered", s.buffered);
   r.set("overlap", s.overlap);
+  if (machine.options().fidelity.skip_numerics)
+    r.set("numerics",
+          "computed: fidelity.skip_numerics does not apply -- the pipeline's schedule depends on "
+          "the data "
+          "(row interchanges, a failed pivot), and its arithmetic costs microseconds of wall time");
   ResultValue qdd = ResultValue::list();
   for (double v : o.qdd) qdd.push(v);
   r.set("qdd", qdd);
