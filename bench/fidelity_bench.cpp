@@ -6,10 +6,7 @@
 // Every simulation is a child process of t800sim (`t800sim run SCENE --set ... --json`): SystemC
 // runs one simulation per process. The wall time is measured around the child with a steady clock,
 // the peak memory is the child's ru_maxrss from wait4().
-#include <poll.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -32,6 +29,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "tools/child_run.hpp"
 #include "tools/paper_data.hpp"
 #include "workloads/pipeline/pipeline.hpp"
 
@@ -143,84 +141,6 @@ std::vector<BenchScene> paper_scenes(const Options& o) {
 
 // --- child processes -----------------------------------------------------------------------------
 
-struct Child {
-  int status = 0;  // as from wait4
-  std::string out, err;
-  double wall_s = 0;
-  long maxrss_kib = 0;
-};
-
-// Reads both pipes until both close, so a child writing much to one cannot block on the other.
-void drain(int out_fd, int err_fd, Child& c) {
-  pollfd fds[2] = {{out_fd, POLLIN, 0}, {err_fd, POLLIN, 0}};
-  std::string* sinks[2] = {&c.out, &c.err};
-  int open = 2;
-  std::array<char, 65536> buffer;
-  while (open > 0) {
-    if (poll(fds, 2, -1) < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error(std::string("poll: ") + std::strerror(errno));
-    }
-    for (int i = 0; i < 2; ++i) {
-      if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
-      const ssize_t n = read(fds[i].fd, buffer.data(), buffer.size());
-      if (n > 0) {
-        sinks[i]->append(buffer.data(), std::size_t(n));
-      } else if (n < 0 && errno == EINTR) {
-        continue;
-      } else {
-        close(fds[i].fd);
-        fds[i].fd = -1;
-        --open;
-      }
-    }
-  }
-}
-
-// Runs `exe args...` (no shell) with SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1; times it and takes its
-// rusage.
-Child run_child(const std::string& exe, const std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  argv.push_back(const_cast<char*>(exe.c_str()));
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  int out_pipe[2], err_pipe[2];
-  if (pipe(out_pipe) != 0) throw std::runtime_error("cannot create a pipe");
-  if (pipe(err_pipe) != 0) {
-    close(out_pipe[0]);
-    close(out_pipe[1]);
-    throw std::runtime_error("cannot create a pipe");
-  }
-  Child c;
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-  if (pid == 0) {
-    dup2(out_pipe[1], STDOUT_FILENO);
-    dup2(err_pipe[1], STDERR_FILENO);
-    close(out_pipe[0]);
-    close(err_pipe[0]);
-    close(out_pipe[1]);
-    close(err_pipe[1]);
-    setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
-    execv(exe.c_str(), argv.data());
-    const std::string message = "cannot execute " + exe + ": " + std::strerror(errno) + "\n";
-    if (write(STDERR_FILENO, message.data(), message.size()) < 0) {
-    }
-    _exit(127);
-  }
-  close(out_pipe[1]);
-  close(err_pipe[1]);
-  drain(out_pipe[0], err_pipe[0], c);
-  rusage usage{};
-  while (wait4(pid, &c.status, 0, &usage) < 0) {
-    if (errno != EINTR) throw std::runtime_error(std::string("wait4: ") + std::strerror(errno));
-  }
-  c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  c.maxrss_kib = usage.ru_maxrss;  // Linux: kilobytes
-  return c;
-}
-
 std::string command_line(const std::string& exe, const std::vector<std::string>& args) {
   std::string s = exe;
   for (const std::string& a : args) s += " " + a;
@@ -263,7 +183,7 @@ void run_once(const std::string& exe, const BenchScene& s, const Level& level, R
       args.push_back("--set");
       args.push_back(o);
     }
-  const Child c = run_child(exe, args);
+  const tools::ChildOutput c = tools::run_program(exe, args);
   const std::string cmd = command_line(exe, args);
   if (!WIFEXITED(c.status) || WEXITSTATUS(c.status) != 0) {
     const std::string how = WIFEXITED(c.status)

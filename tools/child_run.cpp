@@ -1,12 +1,16 @@
 #include "tools/child_run.hpp"
 
+#include <sys/resource.h>
+
 #include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
 #include <cerrno>
+#include <chrono>
 #include <climits>
+#include <cstring>
 #include <stdexcept>
 
 namespace tools {
@@ -47,11 +51,20 @@ void drain(int out_fd, int err_fd, ChildOutput& result) {
 
 }  // namespace
 
-ChildOutput run_self(const std::vector<std::string>& args) {
-  ChildOutput result;
-  const std::string exe = self_executable();
+ChildOutput run_program(const std::string& exe, const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  argv.push_back(const_cast<char*>(exe.c_str()));
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
   int out_pipe[2], err_pipe[2];
-  if (pipe(out_pipe) != 0 || pipe(err_pipe) != 0) throw std::runtime_error("cannot create pipes");
+  if (pipe(out_pipe) != 0) throw std::runtime_error("cannot create pipes");
+  if (pipe(err_pipe) != 0) {
+    close(out_pipe[0]);
+    close(out_pipe[1]);
+    throw std::runtime_error("cannot create pipes");
+  }
+  ChildOutput result;
+  const auto start = std::chrono::steady_clock::now();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("cannot start a child process");
   if (pid == 0) {
@@ -61,25 +74,31 @@ ChildOutput run_self(const std::vector<std::string>& args) {
     close(err_pipe[0]);
     close(out_pipe[1]);
     close(err_pipe[1]);
-    std::vector<char*> argv;
-    argv.push_back(const_cast<char*>(exe.c_str()));
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
     setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
     execv(exe.c_str(), argv.data());
+    const std::string message = "cannot execute " + exe + ": " + std::strerror(errno) + "\n";
+    if (write(STDERR_FILENO, message.data(), message.size()) < 0) {
+    }
     _exit(127);
   }
   close(out_pipe[1]);
   close(err_pipe[1]);
   drain(out_pipe[0], err_pipe[0], result);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  rusage usage{};
+  while (wait4(pid, &result.status, 0, &usage) < 0 && errno == EINTR) {
   }
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.maxrss_kib = usage.ru_maxrss;  // Linux: kilobytes
+  result.exit_code = WIFEXITED(result.status) ? WEXITSTATUS(result.status) : -1;
   return result;
 }
 
-nlohmann::json run_scene_child(const std::string& scene, const std::vector<std::string>& overrides) {
+ChildOutput run_self(const std::vector<std::string>& args) {
+  return run_program(self_executable(), args);
+}
+
+nlohmann::json run_scene_child(const std::string& scene,
+                               const std::vector<std::string>& overrides) {
   std::vector<std::string> args{"run", scene, "--json"};
   for (const std::string& o : overrides) {
     args.push_back("--set");
@@ -89,7 +108,8 @@ nlohmann::json run_scene_child(const std::string& scene, const std::vector<std::
   if (child.exit_code != 0) {
     std::string message = child.err.empty() ? child.out : child.err;
     while (!message.empty() && message.back() == '\n') message.pop_back();
-    if (message.empty()) message = "the simulation exited with code " + std::to_string(child.exit_code);
+    if (message.empty())
+      message = "the simulation exited with code " + std::to_string(child.exit_code);
     throw std::runtime_error(message);
   }
   try {

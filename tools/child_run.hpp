@@ -1,6 +1,6 @@
-// Running simulations in child processes. SystemC can elaborate and run only once per process, so anything
-// that needs several simulations (calibration, the paper tables, sweeps) runs `t800sim run ... --json` again
-// as a child and reads its JSON report back.
+// Running simulations in child processes. SystemC can elaborate and run only once per process, so
+// anything that needs several simulations (calibration, the paper tables, sweeps) runs `t800sim run
+// ... --json` again as a child and reads its JSON report back.
 #pragma once
 
 #include <string>
@@ -12,17 +12,23 @@ namespace tools {
 
 struct ChildOutput {
   int exit_code = -1;  // -1: could not start or killed by a signal
+  int status = 0;      // as wait4 gave it (WIFSIGNALED, WTERMSIG, ...)
   std::string out, err;
+  double wall_s = 0;    // from just before fork to wait4's return
+  long maxrss_kib = 0;  // the child's peak resident memory (rusage)
 };
 
 // The path of the running t800sim executable.
 std::string self_executable();
 
-// Runs this executable with `args` (no shell involved) and captures stdout and stderr.
+// Runs `exe` with `args` (no shell involved, SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1) and captures
+// stdout and stderr, its wall time and peak memory.
+ChildOutput run_program(const std::string& exe, const std::vector<std::string>& args);
+// The same, for this executable.
 ChildOutput run_self(const std::vector<std::string>& args);
 
-// `t800sim run SCENE --json --set O...` in a child. Throws std::runtime_error carrying the child's error
-// message when it fails (bad input, deadlock, crash).
+// `t800sim run SCENE --json --set O...` in a child. Throws std::runtime_error carrying the child's
+// error message when it fails (bad input, deadlock, crash).
 nlohmann::json run_scene_child(const std::string& scene, const std::vector<std::string>& overrides);
 
 }  // namespace tools
