@@ -14,6 +14,7 @@
 #include "network/machine.hpp"
 #include "network/topology_file.hpp"
 #include "tests/elimination/elimination_fixtures.hpp"
+#include "tests/elimination/pipeline_fixtures.hpp"
 #include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 #include "workloads/pipeline/pipeline.hpp"
@@ -39,60 +40,24 @@ constexpr Structure kOverlap{"overlap", true, false};
 constexpr Structure kBuffered{"buffered", false, true};
 constexpr Structure kOverlapBuffered{"overlap_buffered", true, true};
 
-struct StructureRun {
-  workloads::PipelineOutcome outcome;
-  std::vector<network::BlockedProcess> blocked;
-  bool matches_sequential = false;
-};
-
-StructureRun run_structure(int m, const Structure& structure,
-                           const elimination::LinearSystem<double>& system,
-                           const elimination::PivotRule& r, t800::Precision precision) {
-  const network::Topology topology = network::load_topology(std::string(T800SIM_SOURCE_DIR) + "/" +
-                                                            workloads::elimination_topology(m));
-  network::MachineOptions options;
-  options.precision = precision;
-  network::Machine machine(topology, options);
-  workloads::PipelineSettings settings;
-  settings.m = m;
-  settings.precision = precision;
-  settings.rule = r;
-  settings.overlap = structure.overlap;
-  settings.buffered = structure.buffered;
-  workloads::EliminationPipeline pipeline(settings, system, topology);
-  pipeline.build(machine);
-  StructureRun run;
-  run.blocked = machine.run();
-  run.outcome = pipeline.outcome();
-  if (run.blocked.empty())
-    run.matches_sequential =
-        pipeline.results(machine).get("matches_sequential")->to_json() == "true";
-  return run;
-}
-
+// Every structure gives the sequential solver's q'', and the windows docs/table6.md reports lie
+// inside Tp.
 template <class T>
 void expect_same_as_sequential(int m, const Structure& structure,
                                const elimination::LinearSystem<double>& system,
                                const elimination::PivotRule& r) {
-  const auto precision =
-      std::is_same_v<T, double> ? t800::Precision::real64 : t800::Precision::real32;
-  const StructureRun run = run_structure(m, structure, system, r, precision);
-  ASSERT_TRUE(run.blocked.empty())
-      << run.blocked.front().process << ": " << run.blocked.front().status;
-  const auto data = elimination::convert<T>(system);
-  const auto expected = elimination::solve(data.a, data.b, r);
-  ASSERT_EQ(run.outcome.status, expected.status);
-  ASSERT_EQ(run.outcome.qdd.size(), expected.x.size());
-  for (std::size_t i = 0; i < expected.x.size(); ++i)
-    EXPECT_EQ(run.outcome.qdd[i], static_cast<double>(expected.x[i])) << "unknown " << i;  // exact
-  EXPECT_EQ(run.outcome.pivot_rows, expected.pivot_rows);
-  EXPECT_EQ(run.outcome.interchanges, expected.interchanges);
-  EXPECT_TRUE(run.matches_sequential);
-  EXPECT_GT(run.outcome.tp_us(), 0.0);
-  // The windows docs/table6.md reports lie inside Tp.
+  PipelineRun run;
+  expect_same_as_sequential<T>(m, system, r, structure.overlap, structure.buffered, &run);
+  if (!run.blocked.empty()) return;
   EXPECT_GE(run.outcome.level2_first_us, run.outcome.start_us);
   EXPECT_LE(run.outcome.level2_last_us, run.outcome.eliminated_us);
   EXPECT_LE(run.outcome.eliminated_us, run.outcome.end_us);
+}
+
+PipelineRun run_structure(int m, const Structure& structure,
+                          const elimination::LinearSystem<double>& system,
+                          const elimination::PivotRule& r, t800::Precision precision) {
+  return run_pipeline(m, system, r, precision, structure.overlap, structure.buffered);
 }
 
 // Buffered level 2, strict and overlapped steps.
@@ -129,7 +94,7 @@ TEST_P(Buffered, ZeroPivotInterchangeEqualsSequential) {
 TEST_P(Buffered, SingularSystemIsReportedAndNothingDeadlocks) {
   auto system = elimination::random_system(6, 5);
   for (auto& row : system.a) row[5] = 0;
-  const StructureRun run =
+  const PipelineRun run =
       run_structure(m(), structure(), system, rule(Pivoting::simple), t800::Precision::real64);
   EXPECT_TRUE(run.blocked.empty());
   EXPECT_EQ(run.outcome.status, Status::no_pivot);
@@ -140,7 +105,7 @@ TEST_P(Buffered, SingularSystemIsReportedAndNothingDeadlocks) {
 TEST_P(Buffered, NonFiniteIsReportedByLevelThree) {
   auto system = elimination::random_system(6, 5);
   system.a[3][2] = std::numeric_limits<double>::quiet_NaN();
-  const StructureRun run =
+  const PipelineRun run =
       run_structure(m(), structure(), system, rule(Pivoting::simple), t800::Precision::real64);
   EXPECT_TRUE(run.blocked.empty());
   EXPECT_EQ(run.outcome.status, Status::non_finite);
