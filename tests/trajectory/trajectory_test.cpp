@@ -243,4 +243,20 @@ TEST(Trajectory, ADivergingRunEndsWithTheSolverFailureAndNothingBlocks) {
   EXPECT_FALSE(report.workload.get("limit_violations")->items().empty());
 }
 
+// A pivot threshold above the wrist's tiny last pivot (D66 ~ 3e-4 against max|D| ~ 155): level 1
+// finds no usable pivot at the last step of the first solve. Level-2 processors with no rows in
+// that step already wait for the next system; they too must be stopped (a regression: they were
+// left blocked).
+TEST(Trajectory, NoUsablePivotAtTheLastStepEndsTheRunAndNothingBlocks) {
+  auto p = defaults();
+  p.set("pivot_threshold", 1e-5);
+  p.set("steps", std::int64_t{3});
+  const auto report = run(p);
+  ASSERT_TRUE(report.blocked.empty()) << report.blocked.front().process;
+  ASSERT_NE(report.workload.get("failure"), nullptr);
+  EXPECT_NE(report.workload.get("failure")->to_text().find("no usable pivot at step 5"),
+            std::string::npos);
+  EXPECT_EQ(report.workload.get("steps")->number(), 0);
+}
+
 }  // namespace

@@ -383,11 +383,14 @@ class PipelineProgram<T>::Levels {
   }
 
   // Every level-2 processor waiting in step k gets a stop (failed) pivot message; E1 passes it on,
-  // so L3 and L4 stop too and nobody is left blocked. Returns false: L1 stops.
+  // so L3 and L4 stop too and nobody is left blocked. Serving system after system, the processors
+  // with no rows left in step k already wait for the next system's step 0: they get one too.
+  // Returns false: L1 stops.
   bool send_stop(Process& p, int k, bool finish) {
     std::vector<Process::Body> branches;
+    const bool next_round_waits = serve_ == Serve::until_finish && k > 0;
     for (const Port& port : out_ports_)
-      if (!takers(port, k).empty())
+      if (!takers(port, k).empty() || next_round_waits)
         branches.push_back([&port, finish](Process& q) {
           q.out(*port.channel, {kHeaderBytes, PivotMessage::stop(finish), kFailLabel});
         });
