@@ -1,16 +1,23 @@
 #include "t800/activity.hpp"
 
+#include <algorithm>
+
 namespace t800 {
 
 namespace {
-double now_us() { return sc_core::sc_time_stamp().to_seconds() * 1e6; }
+double now_us() {
+  return sc_core::sc_time_stamp().to_seconds() * 1e6;
+}
 }  // namespace
 
 const char* to_string(ProcessorState state) {
   switch (state) {
-    case ProcessorState::idle: return "idle";
-    case ProcessorState::compute: return "compute";
-    case ProcessorState::communicate: return "communicate";
+    case ProcessorState::idle:
+      return "idle";
+    case ProcessorState::compute:
+      return "compute";
+    case ProcessorState::communicate:
+      return "communicate";
   }
   return "?";
 }
@@ -73,14 +80,17 @@ void ProcessorActivity::credit(double compute_us, double communicate_us, double 
   if (keep_intervals_) intervals_.insert(intervals_.end(), intervals.begin(), intervals.end());
 }
 
-void LinkActivity::packet(const sc_core::sc_time& start, const sc_core::sc_time& duration, bool data) {
+void LinkActivity::packet(const sc_core::sc_time& start, const sc_core::sc_time& duration,
+                          bool data) {
   const double d = duration.to_seconds() * 1e6;
   busy_us_ += d;
   if (keep_intervals_) {
     const double s = start.to_seconds() * 1e6;
-    // Adjacent packets merge into one interval so a streaming link is one slice, not thousands.
-    if (!intervals_.empty() && intervals_.back().end_us >= s - 1e-9) {
-      intervals_.back().end_us = s + d;
+    // Packets closer than the merge gap join one interval (merge_gaps_below).
+    if (!intervals_.empty() && intervals_.back().end_us >= s - merge_gap_us_ &&
+        s + d >= intervals_.back().start_us - merge_gap_us_) {
+      intervals_.back().start_us = std::min(intervals_.back().start_us, s);
+      intervals_.back().end_us = std::max(intervals_.back().end_us, s + d);
       if (data && intervals_.back().label == "ack") intervals_.back().label = "data";
     } else {
       intervals_.push_back({s, s + d, 1, data ? "data" : "ack"});

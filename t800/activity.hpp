@@ -1,7 +1,8 @@
-// Per-processor and per-link accounting of time. A processor is, at each instant, computing (its CPU runs a
-// compute block), communicating (its CPU runs communication instructions, or one of its link engines moves a
-// message for one of its processes) or idle. Totals are always kept; intervals only when a trace asks for them
-// (DESIGN.md: "when no trace is asked for, nothing per-interval is stored").
+// Per-processor and per-link accounting of time. A processor is, at each instant, computing (its
+// CPU runs a compute block), communicating (its CPU runs communication instructions, or one of its
+// link engines moves a message for one of its processes) or idle. Totals are always kept; intervals
+// only when a trace asks for them (DESIGN.md: "when no trace is asked for, nothing per-interval is
+// stored").
 #pragma once
 
 #include <cstdint>
@@ -27,7 +28,8 @@ class ProcessorActivity {
   void transfer_begin();
   void transfer_end();
   void keep_intervals(bool keep) { keep_intervals_ = keep; }
-  void close(const sc_core::sc_time& end);  // settles the running state at the end of the simulation
+  void close(
+      const sc_core::sc_time& end);  // settles the running state at the end of the simulation
   // Neither its CPU nor any of its link engines is working for it at this instant.
   bool idle() const { return state() == ProcessorState::idle; }
   // Adds the accounting of a stretch of work that was not simulated but is known to be identical to
@@ -40,7 +42,8 @@ class ProcessorActivity {
   double compute_us() const { return total_us_[int(ProcessorState::compute)]; }
   double communicate_us() const { return total_us_[int(ProcessorState::communicate)]; }
   double busy_us() const { return compute_us() + communicate_us(); }
-  // Busy time so far, counting the state it is in up to the present simulated time (for windowed measures).
+  // Busy time so far, counting the state it is in up to the present simulated time (for windowed
+  // measures).
   double busy_us_now() const;
   // When it first and last left the idle state (the span of its work), in microseconds.
   double first_busy_us() const { return first_busy_us_; }
@@ -66,9 +69,15 @@ class ProcessorActivity {
 class LinkActivity {
  public:
   void packet(const sc_core::sc_time& start, const sc_core::sc_time& duration, bool data);
-  // Kept intervals with this message's data (since the previous message) take its label, for traces.
+  // Kept intervals with this message's data (since the previous message) take its label, for
+  // traces.
   void message_done(std::int64_t bytes, const std::string& label);
   void keep_intervals(bool keep) { keep_intervals_ = keep; }
+  // Kept intervals join packets less than `gap` apart, so a streaming message is one interval, not
+  // one per packet (a long trajectory has tens of thousands of packets per step). A trace's link
+  // intervals therefore span the short gaps between a message's packets; busy_us() counts the
+  // packets alone.
+  void merge_gaps_below(const sc_core::sc_time& gap) { merge_gap_us_ = gap.to_seconds() * 1e6; }
   // Adds the accounting of messages that were not simulated but are known to be identical to ones
   // that were (a reused trajectory step), with their intervals already placed in time when
   // intervals are kept.
@@ -77,7 +86,9 @@ class LinkActivity {
 
   std::int64_t bytes() const { return bytes_; }
   std::int64_t messages() const { return messages_; }
-  double busy_us() const { return busy_us_; }  // time its wire carries packets (data and acknowledges)
+  double busy_us() const {
+    return busy_us_;
+  }  // time its wire carries packets (data and acknowledges)
   const std::vector<Interval>& intervals() const { return intervals_; }
 
  private:
@@ -86,6 +97,7 @@ class LinkActivity {
   bool keep_intervals_ = false;
   std::vector<Interval> intervals_;
   std::size_t unlabelled_ = 0;  // first interval not yet named after its message
+  double merge_gap_us_ = 1e-9;
 };
 
 }  // namespace t800

@@ -38,6 +38,8 @@ Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, Proces
   byte_period_ = std::max(data_packet_, detect_delay_ + ack_packet_ + process_delay_);
 
   for (int d = 0; d < 2; ++d) {
+    dir_[d].activity.merge_gaps_below(
+        data_packet_);  // a trace shows a streaming message as one interval
     sc_core::sc_spawn([this, d] { wire_thread(d); }, sc_core::sc_gen_unique_name("wire"));
     spawn_method([this, d] { on_detect(d); }, dir_[d].detect_event, "detect");
     spawn_method([this, d] { on_ack_processed(d); }, dir_[d].process_event, "ackproc");
