@@ -7,20 +7,23 @@
 
 namespace tools {
 
-namespace {
-std::string field_text(std::string f) {
-  for (char& c : f)
+void append_csv_field(std::string& line, const std::string& field) {
+  const bool quote = field.find_first_of(",\"") != std::string::npos;
+  if (quote) line += '"';
+  for (char c : field) {
     if (c == '\n' || c == '\r') c = ' ';
-  if (f.find_first_of(",\"") == std::string::npos) return f;
-  std::string quoted = "\"";
-  for (char c : f) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
+    if (c == '"') line += '"';
+    line += c;
+  }
+  if (quote) line += '"';
 }
-}  // namespace
 
 std::string csv_line(const std::vector<std::string>& fields) {
   std::string line;
-  for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + field_text(fields[i]);
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i) line += ',';
+    append_csv_field(line, fields[i]);
+  }
   return line + "\n";
 }
 

@@ -7,6 +7,8 @@
 
 namespace tools {
 
+// Appends one field, quoted when it holds a comma or a quote (newlines become spaces).
+void append_csv_field(std::string& line, const std::string& field);
 std::string csv_line(const std::vector<std::string>& fields);  // with the trailing newline
 std::vector<std::string> parse_csv_line(const std::string& line);
 
