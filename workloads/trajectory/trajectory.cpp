@@ -10,6 +10,7 @@
 
 #include <systemc>
 
+#include "network/activity_delta.hpp"
 #include "t800/activity.hpp"
 #include "workloads/dynamics/counted.hpp"
 #include "workloads/elimination/system.hpp"
@@ -128,144 +129,13 @@ double us_between(const sc_core::sc_time& from, const sc_core::sc_time& to) {
   return (to - from).to_seconds() * 1e6;
 }
 
-double to_us(const sc_core::sc_time& t) {
-  return t.to_seconds() * 1e6;
-}
-
 // ---- Step reuse (fidelity.reuse_steps) ----
-// What one simulated step did to the machine's accounting, relative to the step's start.
-struct ProcessorDelta {
-  double compute_us = 0, communicate_us = 0;
-  double first_busy_us = -1;  // offset of the processor's first work ever, when it was in this step
-  double last_busy_us = -1;   // offset of the last time it stopped working in this step (-1: idle)
-  std::vector<t800::Interval> intervals;  // traces only; times from the step's start
-};
-
-struct LinkDelta {
-  std::int64_t bytes = 0, messages = 0;
-  double busy_us = 0;
-  std::vector<t800::Interval> intervals;
-};
-
+// What one simulated step did to the machine's accounting (network/activity_delta.hpp) and its
+// split.
 struct StepDelta {
-  sc_core::sc_time duration;
+  network::ActivityDelta activity;
   StepTimes times;
-  std::vector<ProcessorDelta> processors;
-  std::vector<LinkDelta> links;  // both directions of every link, in Machine::links() order
 };
-
-// The accounting at a step's start.
-struct Snapshot {
-  sc_core::sc_time at;
-  std::vector<double> compute_us, communicate_us, first_busy_us, last_busy_us;
-  std::vector<std::size_t> processor_intervals;
-  std::vector<std::int64_t> bytes, messages;
-  std::vector<double> link_busy_us;
-  std::vector<std::size_t> link_intervals;
-  std::int64_t clock = 0;  // every CPU's clock-dependent slices and timeslice ends, summed
-};
-
-std::int64_t clock_events(network::Machine& m) {
-  std::int64_t n = 0;
-  for (int i = 0; i < m.processors(); ++i) {
-    const t800::CpuStatistics& s = m.transputer(i).cpu().statistics();
-    n += s.clock_dependent + s.timeslices;
-  }
-  return n;
-}
-
-Snapshot snapshot(network::Machine& m) {
-  Snapshot s;
-  s.at = sc_core::sc_time_stamp();
-  for (int i = 0; i < m.processors(); ++i) {
-    const t800::ProcessorActivity& a = m.transputer(i).activity();
-    s.compute_us.push_back(a.compute_us());
-    s.communicate_us.push_back(a.communicate_us());
-    s.first_busy_us.push_back(a.first_busy_us());
-    s.last_busy_us.push_back(a.last_busy_us());
-    s.processor_intervals.push_back(a.intervals().size());
-  }
-  for (const auto& info : m.links())
-    for (int d = 0; d < 2; ++d) {
-      const t800::LinkActivity& a = info.link->activity(d);
-      s.bytes.push_back(a.bytes());
-      s.messages.push_back(a.messages());
-      s.link_busy_us.push_back(a.busy_us());
-      s.link_intervals.push_back(a.intervals().size());
-    }
-  s.clock = clock_events(m);
-  return s;
-}
-
-std::vector<t800::Interval> shifted(const std::vector<t800::Interval>& from, std::size_t first,
-                                    double by_us) {
-  std::vector<t800::Interval> out(from.begin() + std::ptrdiff_t(first), from.end());
-  for (t800::Interval& i : out) {
-    i.start_us += by_us;
-    i.end_us += by_us;
-  }
-  return out;
-}
-
-// The step from `before` to now, as deltas.
-StepDelta step_delta(network::Machine& m, const Snapshot& before, const StepTimes& times) {
-  StepDelta d;
-  d.duration = sc_core::sc_time_stamp() - before.at;
-  d.times = times;
-  const double start_us = to_us(before.at);
-  for (int i = 0; i < m.processors(); ++i) {
-    const std::size_t k = std::size_t(i);
-    const t800::ProcessorActivity& a = m.transputer(i).activity();
-    ProcessorDelta p;
-    p.compute_us = a.compute_us() - before.compute_us[k];
-    p.communicate_us = a.communicate_us() - before.communicate_us[k];
-    if (before.first_busy_us[k] < 0 && a.first_busy_us() >= 0)
-      p.first_busy_us = a.first_busy_us() - start_us;
-    if (a.last_busy_us() != before.last_busy_us[k]) p.last_busy_us = a.last_busy_us() - start_us;
-    p.intervals = shifted(a.intervals(), before.processor_intervals[k], -start_us);
-    d.processors.push_back(std::move(p));
-  }
-  std::size_t k = 0;
-  for (const auto& info : m.links())
-    for (int dir = 0; dir < 2; ++dir, ++k) {
-      const t800::LinkActivity& a = info.link->activity(dir);
-      LinkDelta l;
-      l.bytes = a.bytes() - before.bytes[k];
-      l.messages = a.messages() - before.messages[k];
-      l.busy_us = a.busy_us() - before.link_busy_us[k];
-      l.intervals = shifted(a.intervals(), before.link_intervals[k], -start_us);
-      d.links.push_back(std::move(l));
-    }
-  return d;
-}
-
-// Credits a recorded step to the accounting as if it had just run from `start`.
-void credit(network::Machine& m, const StepDelta& d, const sc_core::sc_time& start) {
-  const double start_us = to_us(start);
-  auto at = [start_us](double offset) { return offset < 0 ? -1.0 : start_us + offset; };
-  for (int i = 0; i < m.processors(); ++i) {
-    const ProcessorDelta& p = d.processors[std::size_t(i)];
-    m.transputer(i).activity().credit(p.compute_us, p.communicate_us, at(p.first_busy_us),
-                                      at(p.last_busy_us), shifted(p.intervals, 0, start_us));
-  }
-  std::size_t k = 0;
-  for (const auto& info : m.links())
-    for (int dir = 0; dir < 2; ++dir, ++k) {
-      const LinkDelta& l = d.links[k];
-      info.link->activity(dir).credit(l.bytes, l.messages, l.busy_us,
-                                      shifted(l.intervals, 0, start_us));
-    }
-}
-
-// Empty when nothing is under way: every processor idle (no compute, no link transfer for it) and
-// every link quiet, so what happens from here on does not depend on the past.
-std::string unquiet(network::Machine& m) {
-  for (int i = 0; i < m.processors(); ++i)
-    if (!m.transputer(i).activity().idle()) return m.node_name(i) + " was busy";
-  for (const auto& info : m.links())
-    if (!info.link->quiet()) return "link " + info.name + " was not quiet";
-  return {};
-}
 
 struct StepRecord {
   double t = 0;
@@ -383,7 +253,7 @@ class Trajectory : public Workload {
     // The step's numbers by the sequential numerics, and with them its signature: every
     // data-dependent branch of the step.
     const Sequential seq = sequential(t, x);
-    std::string why = seq.solved ? unquiet(m) : "the sequential solve failed";
+    std::string why = seq.solved ? network::unquiet(m) : "the sequential solve failed";
     if (!why.empty() && seq.solved) why += " at the step's start";
     if (why.empty()) {
       const auto known = recorded_.find(seq.signature);
@@ -393,7 +263,7 @@ class Trajectory : public Workload {
         return seq.next;
       }
     }
-    const Snapshot before = snapshot(m);
+    const network::ActivitySnapshot before = network::snapshot(m);
     simulated_signature_.clear();
     ++simulated_;
     integration::State<S> next;
@@ -405,7 +275,7 @@ class Trajectory : public Workload {
     }
     if (why.empty()) why = invariance(m, before, seq, next);
     if (why.empty()) {
-      recorded_.emplace(seq.signature, step_delta(m, before, times));
+      recorded_.emplace(seq.signature, StepDelta{network::delta_since(m, before), times});
       why = "the first step of its signature (recorded)";
     }
     ++simulated_because_[why];
@@ -418,12 +288,12 @@ class Trajectory : public Workload {
   }
 
   // Why the step just simulated may not stand for later steps of its signature; empty when it may.
-  std::string invariance(network::Machine& m, const Snapshot& before, const Sequential& seq,
-                         const integration::State<S>& next) const {
-    if (clock_events(m) != before.clock)
+  std::string invariance(network::Machine& m, const network::ActivitySnapshot& before,
+                         const Sequential& seq, const integration::State<S>& next) const {
+    if (network::clock_events(m) != before.clock)
       return "a CPU's timeslice clock was involved (t800::CpuStatistics clock_dependent or "
              "timeslices changed): the step is not translation-invariant";
-    const std::string busy = unquiet(m);
+    const std::string busy = network::unquiet(m);
     if (!busy.empty()) return busy + " at the step's end";
     if (simulated_signature_ != seq.signature)
       return "the pipeline's pivots differ from the sequential solver's";
@@ -438,8 +308,8 @@ class Trajectory : public Workload {
   // is credited to every processor and link.
   void replay(Process& p, const StepDelta& d, StepTimes& times) {
     const sc_core::sc_time start = sc_core::sc_time_stamp();
-    sc_core::wait(d.duration);
-    credit(p.machine(), d, start);
+    sc_core::wait(d.activity.duration);
+    network::credit(p.machine(), d.activity, start);
     times = d.times;
   }
 
