@@ -3,6 +3,7 @@
 
 #include "network/config_error.hpp"
 #include "tools/commands.hpp"
+#include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 
 namespace tools {
@@ -13,7 +14,7 @@ void add_check_command(CLI::App& app) {
   cmd->add_option("file", *file, "scene or topology TOML file")->required();
   cmd->callback([file] {
     run_command([&] {
-      std::cout << "ok: " << check_file(*file) << "\n";
+      std::cout << "ok: " << check_input(*file) << "\n";
       return kExitOk;
     });
   });

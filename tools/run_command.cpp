@@ -50,8 +50,9 @@ struct RunArgs {
 
 int run_scene(const RunArgs& args) {
   const Scene scene = load_scene(args.scene, args.overrides);
+  const workloads::RunInputs inputs = inputs_from(scene, args.traces.any());
   check_trace_files(args.traces);
-  const workloads::RunReport report = workloads::run(inputs_from(scene, args.traces.any()));
+  const workloads::RunReport report = workloads::run(inputs);
   std::cout << (args.json ? format_json(report) : format_text(report)) << std::flush;
   write_traces(report, args.traces);  // also after a deadlock: the trace shows who waited for whom
   return report.blocked.empty() ? kExitOk : kExitFailure;

@@ -9,6 +9,7 @@
 #include <initializer_list>
 
 #include "network/families.hpp"
+#include "network/toml_limits.hpp"
 #include "network/toml_util.hpp"
 #include "network/topology_file.hpp"
 
@@ -61,15 +62,19 @@ std::string toml_quoted(const std::string& text) {
 // TOML ("P1", "../x.toml") is taken as a bare string.
 toml::table parse_override(const std::string& key, const std::string& value,
                            const std::string& flag) {
+  const auto parse = [&](const std::string& document) {
+    network::check_toml_limits(document, flag, false);
+    return toml::parse(std::string_view(document), std::string_view(flag));
+  };
   const bool one_line = value.find_first_of("\r\n") == std::string::npos;
   if (one_line) {
     try {
-      return toml::parse(std::string_view(key + " = " + value), std::string_view(flag));
+      return parse(key + " = " + value);
     } catch (const toml::parse_error&) {
       // fall through: a bare string
     }
   }
-  return toml::parse(std::string_view(key + " = " + toml_quoted(value)), std::string_view(flag));
+  return parse(key + " = " + toml_quoted(value));
 }
 
 void apply_override(toml::table& root, const std::string& text) {
@@ -132,7 +137,7 @@ class SceneReader {
   std::string text_or(const toml::table& table, const std::string& key, std::string fallback) const;
 
   t800::LinkConfig link_config(const toml::table& net) const;
-  network::Topology topology(const toml::table* net) const;
+  void topology(const toml::table* net, Scene& scene) const;
   network::Topology generated(const toml::table& net, const toml::node& family) const;
   network::Topology from_file(const toml::node& path) const;
   void workload(Scene& scene) const;
@@ -195,7 +200,7 @@ t800::LinkConfig SceneReader::link_config(const toml::table& net) const {
   return link;
 }
 
-network::Topology SceneReader::topology(const toml::table* net) const {
+void SceneReader::topology(const toml::table* net, Scene& scene) const {
   static const toml::table empty;
   const toml::table& n = net ? *net : empty;
   // Exactly one source of processors; naming the ones found makes a clash easy to fix.
@@ -214,19 +219,24 @@ network::Topology SceneReader::topology(const toml::table* net) const {
          "give only one of network.topology, network.family and [topology]; "
          "this scene has both " +
              given[0].first + " and " + given[1].first);
+  scene.origins["network"] = pos(*given[0].second);
   const bool family = given[0].first == "network.family";
   for (const char* key : {"workers", "processor"})
     if (const toml::node* node = n.get(key); node && !family)
       fail(*node, "network." + std::string(key) +
                       " applies only to a generated network (network.family); a topology file "
                       "sets each [[processor]] itself");
-  if (family) return generated(n, *given[0].second);
-  if (given[0].first == "network.topology") return from_file(*given[0].second);
-  const toml::node& inline_table = *given[0].second;
-  if (!inline_table.is_table())
-    fail(inline_table, "'topology': expected a table, got " + type_name(inline_table) +
-                           "; to name a topology file, use network.topology");
-  return network::parse_topology(*inline_table.as_table(), file_);
+  if (family) {
+    scene.topology = generated(n, *given[0].second);
+  } else if (given[0].first == "network.topology") {
+    scene.topology = from_file(*given[0].second);
+  } else {
+    const toml::node& inline_table = *given[0].second;
+    if (!inline_table.is_table())
+      fail(inline_table, "'topology': expected a table, got " + type_name(inline_table) +
+                             "; to name a topology file, use network.topology");
+    scene.topology = network::parse_topology(*inline_table.as_table(), file_);
+  }
 }
 
 network::Topology SceneReader::generated(const toml::table& net, const toml::node& family) const {
@@ -294,7 +304,7 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
     case ParamType::real: {
       if (!value.is_number()) wrong_type(value);  // an integer is a fine real
       const double x = number(value);
-      if (std::isnan(x)) fail(value, key + " is nan: give a number");
+      if (!std::isfinite(x)) fail(value, key + " is " + number_text(x) + ": give a finite number");
       check_range(x);
       return x;
     }
@@ -324,7 +334,8 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
           fail(element, "'" + key + "': expected an array of numbers, got an element of type " +
                             type_name(element));
         list.push_back(number(element));
-        if (std::isnan(list.back())) fail(element, key + " contains nan: give numbers");
+        if (!std::isfinite(list.back()))
+          fail(element, key + " contains " + number_text(list.back()) + ": give finite numbers");
         check_range(list.back());
       }
       return list;
@@ -349,8 +360,10 @@ void SceneReader::workload(Scene& scene) const {
   std::vector<std::string> valid{"kind"};
   for (const workloads::ParamSpec& p : info->params) valid.push_back(p.name);
   check_keys(t, valid, "[workload] of kind " + info->kind);
+  scene.origins["workload"] = pos(t);
   for (const workloads::ParamSpec& spec : info->params) {
     const toml::node* value = t.get(spec.name);
+    if (value) scene.origins["workload." + spec.name] = pos(*value);
     scene.workload.set(spec.name, value ? param(spec, *value, scene.topology) : spec.default_value);
   }
 }
@@ -365,6 +378,8 @@ void SceneReader::calibration(Scene& scene) const {
   const toml::table& t = table(*node, "calibration");
   check_keys(t, {"file", "code_efficiency", "fitted"}, "[calibration]");
   if (const toml::node* file = t.get("file")) {
+    if (text(*file, "calibration.file").empty())
+      fail(*file, "calibration.file is empty: name the calibration file, e.g. \"../calibration.toml\"");
     const fs::path path = fs::path(file_).parent_path() / text(*file, "calibration.file");
     const toml::table shared = network::parse_toml_file(path.string(), "calibration file");
     const toml::node* inner = shared.get("calibration");
@@ -443,7 +458,7 @@ Scene SceneReader::read() {
                {"topology", "family", "workers", "link_speed_mbps", "link_protocol", "processor"},
                "[network]");
   if (net) scene.link = link_config(*net);
-  scene.topology = topology(net);
+  topology(net, scene);
   workload(scene);
   calibration(scene);
   fidelity(scene);
@@ -451,6 +466,15 @@ Scene SceneReader::read() {
 }
 
 }  // namespace
+
+SourcePos origin_of(const Scene& scene, const std::vector<std::string>& keys) {
+  for (const std::string& key : keys)
+    if (auto it = scene.origins.find(key); it != scene.origins.end()) return it->second;
+  for (const std::string& key : keys)
+    if (key.rfind("workload.", 0) == 0 && scene.origins.count("workload"))
+      return scene.origins.at("workload");
+  return {scene.file, 0, 0};
+}
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
   toml::table root = network::parse_toml_file(path, "scene file");

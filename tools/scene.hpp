@@ -25,7 +25,15 @@ struct Scene {
   std::string calibration_note;
   // [fidelity]: links, compute, skip_numerics, reuse_steps (network/fidelity.hpp).
   network::Fidelity fidelity;
+  // Where settings were written, for errors found after reading (workloads::SettingError): each
+  // workload parameter given ("workload.NAME"), the [workload] table ("workload") and what gave
+  // the network ("network"); a file position, or the --set flag that gave it.
+  std::map<std::string, network::SourcePos> origins;
 };
+
+// Where `keys` (most specific first) were written: the first one given, else the [workload] table
+// for a workload key, else the scene file.
+network::SourcePos origin_of(const Scene& scene, const std::vector<std::string>& keys);
 
 // Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the value is
 // read as a TOML value (4000, 2.5, "text", true, [1,2]) and, if that fails, as a bare string. Overrides are

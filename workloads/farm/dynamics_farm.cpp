@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include "workloads/farm/farm_program.hpp"
 
 namespace workloads {
@@ -14,11 +16,13 @@ using dynamics::JointVector;
 JointVector joint_vector(const Params& p, const std::string& name) {
   const std::vector<double>& v = p.real_list(name);
   if (v.size() != dynamics::kJoints)
-    throw std::invalid_argument("workload." + name + " needs " + std::to_string(dynamics::kJoints) +
-                                " values, got " + std::to_string(v.size()));
+    throw SettingError({"workload." + name}, "workload." + name + " needs " +
+                                                 std::to_string(dynamics::kJoints) +
+                                                 " values, got " + std::to_string(v.size()));
   JointVector out;
   for (int i = 0; i < dynamics::kJoints; ++i) {
-    if (!std::isfinite(v[i])) throw std::invalid_argument("workload." + name + " has a non-finite value");
+    if (!std::isfinite(v[i]))
+      throw SettingError({"workload." + name}, "workload." + name + " has a non-finite value");
     out(i) = v[i];
   }
   return out;
@@ -33,7 +37,8 @@ std::vector<int> workers_of(const network::Topology& t) {
 }
 
 int master_of(const network::Topology& t) {
-  if (t.host_processor() < 0) throw std::invalid_argument("the farm's master must be wired to the host");
+  if (t.host_processor() < 0)
+    throw SettingError({kNetworkKey}, "the farm's master must be wired to the host");
   return t.host_processor();
 }
 
@@ -49,7 +54,8 @@ class DynamicsFarm : public Workload {
         q_(joint_vector(c.params, "q")),
         qd_(joint_vector(c.params, "qd")) {
     if (!dynamics::within_limits(require_robot(c), q_))
-      throw std::invalid_argument("workload.q is outside the joint limits of " + require_robot(c).name);
+      throw SettingError({"workload.q"},
+                         "workload.q is outside the joint limits of " + require_robot(c).name);
   }
 
   void build(network::Machine& m) override {

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 namespace workloads {
 
 namespace {
@@ -12,13 +14,15 @@ std::pair<int, int> neighbour_pair(const Params& params, const network::Topology
   const int from = processor_param(params, "from", topology, std::max(topology.host_processor(), 0));
   const auto neighbours = topology.neighbours(from);
   if (neighbours.empty())
-    throw std::invalid_argument("processor " + topology.processors[from].name +
-                                " has no neighbour: a link workload needs two linked processors");
+    throw SettingError({"workload.from", kNetworkKey},
+                       "processor " + topology.processors[from].name +
+                           " has no neighbour: a link workload needs two linked processors");
   const int to = processor_param(params, "to", topology, neighbours.front());
   if (std::find(neighbours.begin(), neighbours.end(), to) == neighbours.end())
-    throw std::invalid_argument("workload.from and workload.to must be neighbours: " +
-                                topology.processors[from].name + " and " + topology.processors[to].name +
-                                " are not linked");
+    throw SettingError(
+        {"workload.to", "workload.from", kNetworkKey},
+        "workload.from and workload.to must be neighbours: " + topology.processors[from].name +
+            " and " + topology.processors[to].name + " are not linked");
   return {from, to};
 }
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include "workloads/dynamics/subtask_set.hpp"
 #include "workloads/pipeline/pipeline.hpp"
 
@@ -15,10 +17,10 @@ elimination::LinearSystem<double> given_system(const Params& p) {
   const std::vector<double>& b = p.real_list("b");
   const std::size_t n = b.size();
   if (n == 0 || a.size() != n * n)
-    throw std::invalid_argument(
-        "elimination: workload.a must hold n*n values (row by row) for the n "
-        "values of workload.b; got " +
-        std::to_string(a.size()) + " and " + std::to_string(n));
+    throw SettingError({"workload.a"},
+                       "elimination: workload.a must hold n*n values (row by row) for the n "
+                       "values of workload.b; got " +
+                           std::to_string(a.size()) + " and " + std::to_string(n));
   elimination::LinearSystem<double> s;
   for (std::size_t i = 0; i < n; ++i) {
     s.a.emplace_back(a.begin() + std::ptrdiff_t(i * n), a.begin() + std::ptrdiff_t((i + 1) * n));
@@ -30,9 +32,9 @@ elimination::LinearSystem<double> given_system(const Params& p) {
 dynamics::JointVector joint_vector(const Params& p, const std::string& name) {
   const std::vector<double>& v = p.real_list(name);
   if (v.size() != dynamics::kJoints)
-    throw std::invalid_argument("elimination: workload." + name + " needs " +
-                                std::to_string(dynamics::kJoints) + " values, got " +
-                                std::to_string(v.size()));
+    throw SettingError({"workload." + name}, "elimination: workload." + name + " needs " +
+                                                 std::to_string(dynamics::kJoints) +
+                                                 " values, got " + std::to_string(v.size()));
   dynamics::JointVector j;
   for (int i = 0; i < dynamics::kJoints; ++i) j(i) = v[std::size_t(i)];
   return j;

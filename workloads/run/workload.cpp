@@ -4,6 +4,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include "workloads/farm/dynamics_farm.hpp"
 #include "workloads/links/link_workloads.hpp"
 #include "workloads/pipeline/pipeline.hpp"
@@ -33,7 +35,8 @@ std::unique_ptr<Workload> make_workload(const std::string& kind, const WorkloadC
 }
 
 const dynamics::RobotModel& require_robot(const WorkloadContext& context) {
-  if (!context.robot) throw std::invalid_argument("this workload needs a robot model (workload.robot)");
+  if (!context.robot)
+    throw SettingError({"workload.robot"}, "this workload needs a robot model (workload.robot)");
   return *context.robot;
 }
 
@@ -42,7 +45,8 @@ int processor_param(const Params& params, const std::string& name, const network
   const std::string& value = params.text(name);
   if (value.empty()) return fallback;
   const int index = topology.find(value);
-  if (index < 0) throw std::invalid_argument("workload." + name + ": no processor named " + value);
+  if (index < 0)
+    throw SettingError({"workload." + name}, "workload." + name + ": no processor named " + value);
   return index;
 }
 

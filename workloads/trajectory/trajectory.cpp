@@ -8,6 +8,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include <systemc>
 
 #include "network/activity_delta.hpp"
@@ -19,6 +21,7 @@
 #include "workloads/integration/torque.hpp"
 #include "workloads/pipeline/pipeline_program.hpp"
 #include "workloads/run/operation_mix.hpp"
+#include "workloads/run/output_file.hpp"
 
 namespace workloads {
 
@@ -45,14 +48,16 @@ JointVector joint_vector(const Params& p, const std::string& name, bool broadcas
   const std::vector<double>& v = p.real_list(name);
   const bool one = broadcast && v.size() == 1;
   if (v.size() != dynamics::kJoints && !one)
-    throw std::invalid_argument(
-        "trajectory: workload." + name + " needs " + std::to_string(dynamics::kJoints) + " values" +
-        (broadcast ? " (or one for every joint)" : "") + ", got " + std::to_string(v.size()));
+    throw SettingError({"workload." + name}, "trajectory: workload." + name + " needs " +
+                                                 std::to_string(dynamics::kJoints) + " values" +
+                                                 (broadcast ? " (or one for every joint)" : "") +
+                                                 ", got " + std::to_string(v.size()));
   JointVector out;
   for (int i = 0; i < dynamics::kJoints; ++i) {
     out(i) = v[one ? 0 : std::size_t(i)];
     if (!std::isfinite(out(i)))
-      throw std::invalid_argument("trajectory: workload." + name + " has a non-finite value");
+      throw SettingError({"workload." + name},
+                         "trajectory: workload." + name + " has a non-finite value");
   }
   return out;
 }
@@ -60,7 +65,8 @@ JointVector joint_vector(const Params& p, const std::string& name, bool broadcas
 std::optional<integration::TorqueTable> torque_table(const Params& p) {
   if (p.text("torque") != "csv") return std::nullopt;
   if (p.text("torque_csv").empty())
-    throw std::invalid_argument("trajectory: workload.torque = \"csv\" needs workload.torque_csv");
+    throw SettingError({"workload.torque"},
+                       "trajectory: workload.torque = \"csv\" needs workload.torque_csv");
   const auto how = p.text("interpolation") == "hold" ? integration::TorqueInterpolation::hold
                                                      : integration::TorqueInterpolation::linear;
   return integration::TorqueTable::load(p.text("torque_csv"), how);
@@ -97,7 +103,7 @@ TrajectorySettings settings_from(const Params& p) {
 // processors have the names PipelineNodes looks for).
 int master_of(const network::Topology& t) {
   if (t.host_processor() < 0)
-    throw std::invalid_argument("trajectory: the farm's master must be wired to the host");
+    throw SettingError({kNetworkKey}, "trajectory: the farm's master must be wired to the host");
   return t.host_processor();
 }
 
@@ -113,9 +119,10 @@ std::vector<int> farm_workers(const network::Topology& t) {
 PipelineNodes pipeline_nodes(const network::Topology& t, int m) {
   const int available = level2_count(t);
   if (m < 1 || m > available)
-    throw std::invalid_argument("trajectory: workload.m = " + std::to_string(m) +
-                                " but the topology " + t.name + " has " +
-                                std::to_string(available) + " level-2 processors (E1, E2, ...)");
+    throw SettingError({"workload.m"}, "trajectory: workload.m = " + std::to_string(m) +
+                                           " but the topology " + t.name + " has " +
+                                           std::to_string(available) +
+                                           " level-2 processors (E1, E2, ...)");
   return find_pipeline_nodes(t, m);
 }
 
@@ -166,7 +173,8 @@ class Trajectory : public Workload {
         master_(master_of(c.topology)),
         farm_(model_, s_.farm, master_, farm_workers(c.topology)),
         pipeline_(s_.pipeline, pipeline_nodes(c.topology, s_.pipeline.m), dynamics::kJoints) {
-    if (!(s_.dt > 0)) throw std::invalid_argument("trajectory: workload.dt must be positive");
+    if (!(s_.dt > 0))
+      throw SettingError({"workload.dt"}, "trajectory: workload.dt must be positive");
   }
 
   void build(network::Machine& m) override {
@@ -554,8 +562,8 @@ ResultValue Trajectory<S>::results(const network::Machine&) const {
 // t, q, q̇, τ and the step's simulated time and split; the last row is the final state.
 template <class S>
 void Trajectory<S>::write_csv() const {
-  std::ofstream out(s_.output_csv);
-  if (!out) throw std::runtime_error(s_.output_csv + ": cannot write the trajectory");
+  OutputFile file(s_.output_csv, "workload.output_csv");
+  std::ostream& out = file.out();
   out.precision(17);
   out << "t";
   for (const char* name : {"q", "qd", "tau"})
@@ -569,6 +577,7 @@ void Trajectory<S>::write_csv() const {
     out << ',' << s.step_us << ',' << s.dynamics_us << ',' << s.solve_us << ',' << s.integration_us
         << ',' << s.communication_us << '\n';
   }
+  file.commit();
 }
 
 }  // namespace
