@@ -25,6 +25,8 @@ int sc_main(int argc, char* argv[]) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? tools::kExitOk : tools::kExitBadInput;
+  } catch (const tools::CommandExit& e) {
+    return e.code;
   }
   return tools::kExitOk;
 }

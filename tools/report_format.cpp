@@ -25,6 +25,7 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
     for (const auto& b : r.blocked) out += fmt::format("  {} on {}: {}\n", b.process, b.processor, b.status);
   } else {
     out += "\nworkload\n" + r.workload.to_text(2);
+    if (!r.failure.empty()) out += "\nFAILED: " + r.failure + "\n";
   }
   return out;
 }

@@ -55,7 +55,12 @@ int run_scene(const RunArgs& args) {
   const workloads::RunReport report = workloads::run(inputs);
   std::cout << (args.json ? format_json(report) : format_text(report)) << std::flush;
   write_traces(report, args.traces);  // also after a deadlock: the trace shows who waited for whom
-  return report.blocked.empty() ? kExitOk : kExitFailure;
+  if (!report.blocked.empty()) return kExitFailure;
+  if (!report.failure.empty()) {
+    std::cerr << "error: the run failed: " << report.failure << "\n";
+    return kExitBadResult;
+  }
+  return kExitOk;
 }
 
 }  // namespace

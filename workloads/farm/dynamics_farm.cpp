@@ -1,5 +1,6 @@
 #include "workloads/farm/dynamics_farm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -123,7 +124,9 @@ class DynamicsFarm : public Workload {
       row.set("compute_us", a.compute_us());
       row.set("busy_in_tp_us", busy);
       row.set("utilisation_pct", 100.0 * busy / tp_us);
-      row.set("end_us", a.last_busy_us() - origin);  // when it last stopped working, from the start of Tp
+      // When it last stopped working, from the start of Tp; a worker that did nothing in Tp (no subtask,
+      // nothing to route) was done when Tp began.
+      row.set("end_us", std::max(0.0, a.last_busy_us() - origin));
       ResultValue names = ResultValue::list();
       for (int t : program_.done_by()[w]) names.push(program_.work().tasks[t].subtask.name);
       row.set("subtasks", names);

@@ -54,6 +54,15 @@ std::vector<TraceTrack> trace_tracks(const network::Machine& m, const RunReport&
   return tracks;
 }
 
+// A workload that failed says so in its results' `failure` (elimination, trajectory); any other
+// result with a NaN or an infinity failed as well, whether or not the workload noticed.
+std::string failure_of(const ResultValue& results) {
+  if (const ResultValue* failure = results.get("failure"); failure && !failure->to_text().empty())
+    return failure->to_text();
+  const std::string at = results.first_non_finite();
+  return at.empty() ? "" : "workload." + at + " is not a finite number (NaN or infinite)";
+}
+
 }  // namespace
 
 RunReport run(const RunInputs& in) {
@@ -71,7 +80,10 @@ RunReport run(const RunInputs& in) {
   report.processors = processor_reports(machine, report.simulated_us);
   report.links = link_reports(machine, report.simulated_us);
   if (in.options.keep_intervals) report.tracks = trace_tracks(machine, report);
-  if (report.blocked.empty()) report.workload = workload->results(machine);
+  if (report.blocked.empty()) {
+    report.workload = workload->results(machine);
+    report.failure = failure_of(report.workload);
+  }
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }
@@ -111,6 +123,7 @@ ResultValue RunReport::to_value() const {
     links_value.push(r);
   }
   v.set("links", links_value);
+  if (!failure.empty()) v.set("failure", failure);
   if (!blocked.empty()) {
     ResultValue b = ResultValue::list();
     for (const auto& p : blocked) {

@@ -51,6 +51,9 @@ struct RunReport {
   std::vector<ProcessorReport> processors;
   std::vector<LinkReport> links;
   std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
+  // Non-empty: the run ended but its results are not results: the workload reported a failure (a solve
+  // without a usable pivot) or a number came out NaN or infinite (REAL32 overflow). Says which.
+  std::string failure;
   ResultValue workload;
   std::vector<TraceTrack> tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)
 
