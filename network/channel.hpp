@@ -27,6 +27,9 @@ struct Channel {
   int from = 0, to = 0;  // node indices (the host is Machine::kHost)
   Kind kind = Kind::internal;
   std::vector<int> path;  // nodes from `from` to `to`, for direct and routed channels
+  // The processes that last output and input on it (or are trying to), for deadlock reports.
+  Process* last_writer = nullptr;
+  Process* last_reader = nullptr;
 
   // internal rendezvous
   Process* waiting_reader = nullptr;

@@ -4,6 +4,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "network/wait_cycle.hpp"
+
 namespace network {
 
 namespace {
@@ -185,7 +187,8 @@ Process& Machine::spawn(int node, const std::string& name, t800::Priority priori
     PooledThread* t = threads_.back().get();
     t->process = p;
     t->body = std::move(body);
-    sc_core::sc_spawn([this, t] { pooled_thread(*t); }, sc_core::sc_gen_unique_name("proc"));
+    handles_.push_back(
+        sc_core::sc_spawn([this, t] { pooled_thread(*t); }, sc_core::sc_gen_unique_name("proc")));
     return *p;
   }
   PooledThread* t = idle_threads_.back();
@@ -209,17 +212,37 @@ void Machine::pooled_thread(PooledThread& t) {
 std::vector<BlockedProcess> Machine::run() {
   finalise_channels();
   for (auto& [p, body] : pending_)
-    sc_core::sc_spawn([p, body] { run_body(p, body); }, sc_core::sc_gen_unique_name("proc"));
+    handles_.push_back(
+        sc_core::sc_spawn([p, body] { run_body(p, body); }, sc_core::sc_gen_unique_name("proc")));
   pending_.clear();
   sc_core::sc_start();
+  events_ = sc_core::sc_delta_count();
   end_us_ = sc_core::sc_time_stamp().to_seconds() * 1e6;
   for (auto& t : transputers_) t->activity().close(sc_core::sc_time_stamp());
 
   std::vector<BlockedProcess> blocked;
   for (auto& p : processes_)
     if (!p->ended() && !p->daemon())
-      blocked.push_back({p->name(), node_name(p->node()), p->status()});
+      blocked.push_back({p->name(), node_name(p->node()), p->status(), waits_for(*this, *p)});
+  if (!blocked.empty()) wait_cycle_ = network::wait_cycle(*this);
+  end_threads();
   return blocked;
+}
+
+// Threads still waiting when the run is over (the routers, idle pooled threads, the processes of a
+// deadlock) are killed, so that each unwinds its stack and frees what it holds. SystemC 2.3.4 cannot
+// kill from sc_main (it dereferences the current process, which there is none of), so a thread spawned
+// for the purpose does, in one more delta cycle at the same simulated time.
+void Machine::end_threads() {
+  std::vector<sc_core::sc_process_handle> live;
+  for (const sc_core::sc_process_handle& h : handles_)
+    if (h.valid() && !h.terminated()) live.push_back(h);
+  handles_.clear();
+  if (live.empty()) return;
+  sc_core::sc_spawn([live]() mutable {
+    for (sc_core::sc_process_handle& h : live) h.kill();
+  }, sc_core::sc_gen_unique_name("end_threads"));
+  sc_core::sc_start();
 }
 
 }  // namespace network

@@ -6,6 +6,7 @@
 // SystemC cannot be restarted (DESIGN.md).
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -32,6 +33,7 @@ struct MachineOptions {
 // A process that had not ended when the simulation ran out of events.
 struct BlockedProcess {
   std::string process, processor, status;
+  std::string waits_for;  // whom, network/wait_cycle.hpp
 };
 
 class Machine {
@@ -52,6 +54,9 @@ class Machine {
   // Runs until every process has ended or nothing can happen any more; returns the processes left
   // blocked (empty on a clean end: a deadlock otherwise).
   std::vector<BlockedProcess> run();
+  // After a deadlock, the cycle of waits among the blocked processes, if they close one
+  // (network/wait_cycle.hpp).
+  const std::vector<std::string>& wait_cycle() const { return wait_cycle_; }
 
   const Topology& topology() const { return topology_; }
   int processors() const { return int(transputers_.size()); }
@@ -69,6 +74,7 @@ class Machine {
   const std::vector<LinkInfo>& links() const { return links_; }
   const std::vector<std::unique_ptr<Channel>>& channels() const { return channels_; }
   double simulated_us() const { return end_us_; }
+  std::uint64_t events() const { return events_; }  // SystemC delta cycles of the run
 
   // The link from node a to its neighbour b, and a's end of it; nullopt when they are not
   // neighbours.
@@ -100,11 +106,15 @@ class Machine {
     sc_core::sc_event assigned;
   };
   void pooled_thread(PooledThread& t);
+  void end_threads();
+  std::vector<sc_core::sc_process_handle> handles_;  // every thread spawned for a process
   std::vector<std::unique_ptr<PooledThread>> threads_;
   std::vector<PooledThread*> idle_threads_;
   std::vector<int> ended_;
   bool finalised_ = false;
   double end_us_ = 0;
+  std::uint64_t events_ = 0;
+  std::vector<std::string> wait_cycle_;
 };
 
 }  // namespace network

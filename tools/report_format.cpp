@@ -22,7 +22,12 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
                          l.busy_us, 100.0 * l.utilisation);
   if (!r.blocked.empty()) {
     out += "\nDEADLOCK: the simulation ran out of events with processes still blocked:\n";
-    for (const auto& b : r.blocked) out += fmt::format("  {} on {}: {}\n", b.process, b.processor, b.status);
+    for (const auto& b : r.blocked)
+      out += fmt::format("  {} on {}: {}, waiting for {}\n", b.process, b.processor, b.status, b.waits_for);
+    if (!r.wait_cycle.empty()) {
+      out += "the cycle of waits:\n";
+      for (const std::string& step : r.wait_cycle) out += "  " + step + "\n";
+    }
   } else {
     out += "\nworkload\n" + r.workload.to_text(2);
     if (!r.failure.empty()) out += "\nFAILED: " + r.failure + "\n";

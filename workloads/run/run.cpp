@@ -75,8 +75,9 @@ RunReport run(const RunInputs& in) {
   report.name = in.name;
   report.fidelity = in.options.fidelity;
   report.blocked = machine.run();
+  report.wait_cycle = machine.wait_cycle();
   report.simulated_us = machine.simulated_us();
-  report.events = sc_core::sc_delta_count();
+  report.events = machine.events();
   report.processors = processor_reports(machine, report.simulated_us);
   report.links = link_reports(machine, report.simulated_us);
   if (in.options.keep_intervals) report.tracks = trace_tracks(machine, report);
@@ -131,9 +132,13 @@ ResultValue RunReport::to_value() const {
       r.set("process", p.process);
       r.set("processor", p.processor);
       r.set("status", p.status);
+      r.set("waits_for", p.waits_for);
       b.push(r);
     }
     v.set("deadlock", b);
+    ResultValue cycle = ResultValue::list();
+    for (const std::string& step : wait_cycle) cycle.push(step);
+    v.set("wait_cycle", cycle);
   }
   v.set("workload", workload);
   return v;
