@@ -11,7 +11,9 @@ namespace network {
 
 namespace {
 
-std::string who(const Machine& m, const Process& p) { return p.name() + " on " + m.node_name(p.node()); }
+std::string who(const Machine& m, const Process& p) {
+  return p.name() + " on " + m.node_name(p.node());
+}
 
 // The processes `p` waits for (see the header); empty when nobody could end its wait.
 std::vector<const Process*> waited_for(const Machine& m, const Process& p) {
@@ -32,7 +34,8 @@ std::vector<const Process*> waited_for(const Machine& m, const Process& p) {
   return out;
 }
 
-// "waits to output on channel c for", "waits to input from channel c for", "waits for its PAR branch".
+// "waits to output on channel c for", "waits to input from channel c for", "waits for its PAR
+// branch".
 std::string how(const Process& p) {
   if (!p.branches().empty()) return "waits for its PAR branch";
   if (!p.channel()) return "waits for";

@@ -1,5 +1,6 @@
-// A deadlock report says who waits for whom: the cycle of waits when the blocked processes close one,
-// else where the waits end (a process that has ended, or nobody at the other end of a channel).
+// A deadlock report says who waits for whom: the cycle of waits when the blocked processes close
+// one, else where the waits end (a process that has ended, or nobody at the other end of a
+// channel).
 #include <gtest/gtest.h>
 
 #include "core_fixtures.hpp"
@@ -34,9 +35,10 @@ TEST(WaitCycle, TwoProcessesThatBothOutputFirst) {
   EXPECT_EQ(cycle[1], "right on P1 waits to output on channel back for left on P0");
 }
 
-// The master hands work to two workers and collects the results; worker 2 was wired to a channel the
-// master never writes. work2 and spare share the link P0 -> P2, so both are routed: the master's
-// output is taken by P2's router, and the master waits for worker 2's result, worker 2 for the master.
+// The master hands work to two workers and collects the results; worker 2 was wired to a channel
+// the master never writes. work2 and spare share the link P0 -> P2, so both are routed: the
+// master's output is taken by P2's router, and the master waits for worker 2's result, worker 2 for
+// the master.
 TEST(WaitCycle, AMisWiredFarm) {
   Machine m(core_test::tree(2), core_test::options(20));
   auto& work1 = m.channel("work1", 0, 1);
@@ -66,8 +68,8 @@ TEST(WaitCycle, AMisWiredFarm) {
   EXPECT_EQ(cycle[1], "worker2 on P2 waits to input from channel spare for master on P0");
 }
 
-// A three-stage pipeline whose last stage ends without reading: no cycle; the middle stage waits for a
-// reader that has ended, the first for the middle one.
+// A three-stage pipeline whose last stage ends without reading: no cycle; the middle stage waits
+// for a reader that has ended, the first for the middle one.
 TEST(WaitCycle, ALastStageThatNeverReads) {
   Machine m(core_test::chain(2), core_test::options(20));
   auto& first = m.channel("first", 0, 1);
