@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -28,7 +29,15 @@ struct MachineOptions {
   double code_efficiency = 1.0;
   bool keep_intervals = false;  // for traces
   Fidelity fidelity;
+  // Limits (seconds; 0 = none): the run stops when its simulated time or the host's wall time reaches
+  // one, with processes still running (Machine::limit_reached says which).
+  double max_sim_s = 0, max_wall_s = 0;
+  // Called by workloads that know how far they are (a trajectory: steps done of all), for a progress
+  // display; may be empty.
+  std::function<void(std::int64_t done, std::int64_t total)> progress;
 };
+
+enum class Limit { none, sim_time, wall_time };
 
 // A process that had not ended when the simulation ran out of events.
 struct BlockedProcess {
@@ -54,6 +63,8 @@ class Machine {
   // Runs until every process has ended or nothing can happen any more; returns the processes left
   // blocked (empty on a clean end: a deadlock otherwise).
   std::vector<BlockedProcess> run();
+  // Which limit stopped the run (MachineOptions::max_sim_s, max_wall_s), if one did.
+  Limit limit_reached() const { return limit_; }
   // After a deadlock, the cycle of waits among the blocked processes, if they close one
   // (network/wait_cycle.hpp).
   const std::vector<std::string>& wait_cycle() const { return wait_cycle_; }
@@ -107,6 +118,7 @@ class Machine {
   };
   void pooled_thread(PooledThread& t);
   void end_threads();
+  void run_with_limits();
   std::vector<sc_core::sc_process_handle> handles_;  // every thread spawned for a process
   std::vector<std::unique_ptr<PooledThread>> threads_;
   std::vector<PooledThread*> idle_threads_;
@@ -114,6 +126,7 @@ class Machine {
   bool finalised_ = false;
   double end_us_ = 0;
   std::uint64_t events_ = 0;
+  Limit limit_ = Limit::none;
   std::vector<std::string> wait_cycle_;
 };
 

@@ -20,7 +20,10 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
     if (l.bytes > 0 || l.busy_us > 0)
       out += fmt::format("{:<44} {:>10} {:>9} {:>12.3f} {:>8.1f}\n", l.name, l.bytes, l.messages,
                          l.busy_us, 100.0 * l.utilisation);
-  if (!r.blocked.empty()) {
+  if (r.limit != network::Limit::none) {
+    out += fmt::format("\nSTOPPED by the {} limit before the run ended: no workload results\n",
+                       r.limit == network::Limit::sim_time ? "simulated-time" : "wall-time");
+  } else if (!r.blocked.empty()) {
     out += "\nDEADLOCK: the simulation ran out of events with processes still blocked:\n";
     for (const auto& b : r.blocked)
       out += fmt::format("  {} on {}: {}, waiting for {}\n", b.process, b.processor, b.status, b.waits_for);

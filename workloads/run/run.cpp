@@ -76,12 +76,13 @@ RunReport run(const RunInputs& in) {
   report.fidelity = in.options.fidelity;
   report.blocked = machine.run();
   report.wait_cycle = machine.wait_cycle();
+  report.limit = machine.limit_reached();
   report.simulated_us = machine.simulated_us();
   report.events = machine.events();
   report.processors = processor_reports(machine, report.simulated_us);
   report.links = link_reports(machine, report.simulated_us);
   if (in.options.keep_intervals) report.tracks = trace_tracks(machine, report);
-  if (report.blocked.empty()) {
+  if (report.blocked.empty() && report.limit == network::Limit::none) {
     report.workload = workload->results(machine);
     report.failure = failure_of(report.workload);
   }
@@ -125,6 +126,8 @@ ResultValue RunReport::to_value() const {
   }
   v.set("links", links_value);
   if (!failure.empty()) v.set("failure", failure);
+  if (limit != network::Limit::none)
+    v.set("stopped_by", limit == network::Limit::sim_time ? "max_sim_time" : "max_wall_time");
   if (!blocked.empty()) {
     ResultValue b = ResultValue::list();
     for (const auto& p : blocked) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -181,6 +182,7 @@ class Trajectory : public Workload {
     farm_.build(m);  // never skips numerics: a trajectory integrates its numbers
     pipeline_.build(m, master_, Serve::until_finish);
     integrator_mix_ = to_operation_mix(integrator_ops());
+    progress_ = m.options().progress;
     subtasks_ = farm_.subtasks();
     skip_numerics_asked_ = m.options().fidelity.skip_numerics;
     if (!m.options().fidelity.reuse_steps)
@@ -221,6 +223,7 @@ class Trajectory : public Workload {
         StepRecord row{t, wide(x.q), wide(x.qd), torque(t, wide(x.q), wide(x.qd)), {}};
         x = advance(p, t, x, row.times);
         records_.push_back(row);
+        if (progress_) progress_(n, s_.steps);
         if (!check_limits(wide(x.q), n) && s_.stop_at_limits) break;
       }
     } catch (const SolveFailed& e) {
@@ -459,6 +462,7 @@ class Trajectory : public Workload {
   std::array<bool, dynamics::kJoints> outside_{};
   int steps_outside_ = 0;
   std::string failure_;
+  std::function<void(std::int64_t, std::int64_t)> progress_;
 };
 
 ResultValue joint_values(const JointVector& v) {

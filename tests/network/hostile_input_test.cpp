@@ -1,0 +1,130 @@
+// Input built to break the readers: nesting and sizes beyond reason are refused before parsing,
+// with the position (or the flag) and the limit, by every reader of TOML and by --set. Without the
+// bounds a dotted key or table header some 50,000 levels deep overflowed the parser's stack
+// (SIGSEGV).
+#include <gtest/gtest.h>
+
+#include "network/toml_limits.hpp"
+#include "network/topology_file.hpp"
+#include "test_util.hpp"
+#include "tools/scene.hpp"
+
+namespace {
+
+using nettest::fails_at;
+using nettest::write_file;
+using network::TomlLimits;
+
+std::string dotted(const std::string& part, std::size_t parts) {
+  std::string key = part;
+  for (std::size_t i = 1; i < parts; ++i) key += "." + part;
+  return key;
+}
+
+std::string nested(std::size_t depth, const std::string& open, const std::string& inner,
+                   const std::string& close) {
+  std::string text;
+  for (std::size_t i = 0; i < depth; ++i) text += open;
+  text += inner;
+  for (std::size_t i = 0; i < depth; ++i) text += close;
+  return text;
+}
+
+// The deep cases, each on line 3 of a file whose first lines are fine; the column where it starts.
+struct Deep {
+  std::string name, line, limit;
+  int column;
+};
+
+std::vector<Deep> deep_cases(std::size_t depth) {
+  return {
+      {"dotted key", dotted("k", depth) + " = 1", "dotted parts", 1},
+      {"table header", "[" + dotted("t", depth) + "]", "dotted parts", 2},
+      {"array of tables header", "[[" + dotted("t", depth) + "]]", "dotted parts", 3},
+      {"arrays", "a = " + nested(depth, "[", "1", "]"), "nested more than",
+       5 + int(TomlLimits::kMaxNesting)},
+      {"inline tables", "a = " + nested(depth, "{b = ", "1", "}"), "nested more than",
+       5 + 5 * int(TomlLimits::kMaxNesting)},
+      {"dotted key in an inline table", "a = {" + dotted("k", depth) + " = 1}", "dotted parts", 6},
+  };
+}
+
+TEST(HostileInput, DeepNestingInEveryReaderIsAnErrorAtItsPlace) {
+  for (std::size_t depth : {TomlLimits::kMaxKeyParts + 1, std::size_t(100000)}) {
+    for (const Deep& d : deep_cases(depth)) {
+      const std::string text = "# fine\nname = \"x\"\n" + d.line + "\n";
+      const std::string path = write_file("deep.toml", text);
+      const std::string what = d.name + " at depth " + std::to_string(depth);
+      EXPECT_TRUE(fails_at([&] { network::load_topology(path); }, path, 3, d.column, {d.limit}))
+          << what;
+      EXPECT_TRUE(fails_at([&] { tools::load_scene(path); }, path, 3, d.column, {d.limit})) << what;
+      EXPECT_TRUE(fails_at([&] { tools::check_file(path); }, path, 3, d.column, {d.limit})) << what;
+    }
+  }
+}
+
+TEST(HostileInput, DeepOverridesNameTheFlag) {
+  const std::string scene = nettest::source_dir() + "/configs/scenes/pingpong.toml";
+  for (std::size_t depth : {TomlLimits::kMaxKeyParts + 1, std::size_t(60000)}) {
+    const std::string key = "--set " + dotted("k", depth) + "=1";
+    EXPECT_TRUE(
+        fails_at([&] { tools::load_scene(scene, {key.substr(6)}); }, key, 0, 0, {"dotted parts"}));
+    const std::string value = "--set workload.q=" + nested(depth, "[", "1", "]");
+    EXPECT_TRUE(fails_at([&] { tools::load_scene(scene, {value.substr(6)}); }, value, 0, 0,
+                         {"nested more than"}));
+    const std::string table = "--set workload.q=" + nested(depth, "{a=", "1", "}");
+    EXPECT_TRUE(fails_at([&] { tools::load_scene(scene, {table.substr(6)}); }, table, 0, 0,
+                         {"nested more than"}));
+  }
+}
+
+TEST(HostileInput, TheLimitsThemselvesAreAccepted) {
+  const std::string ok = dotted("k", TomlLimits::kMaxKeyParts) + " = " +
+                         nested(TomlLimits::kMaxNesting, "[", "1", "]") + "\n[" +
+                         dotted("t", TomlLimits::kMaxKeyParts) + "]\ns = \"" +
+                         std::string(TomlLimits::kMaxStringBytes, 'x') + "\"\n";
+  EXPECT_NO_THROW(network::check_toml_limits(ok, "ok.toml"));
+}
+
+// What looks like depth inside strings, quoted keys and comments is not depth.
+TEST(HostileInput, DotsAndBracketsInStringsAndCommentsDoNotCount) {
+  const std::string many = dotted("x", 100);
+  const std::string text = "# " + many + " [[[[[[\n\"" + many + "\" = 1\nb = \"" + many +
+                           "[[[[\"\nc = '''\n" + nested(100, "[", "", "]") + "\n'''\nd = \"\\\"" +
+                           many + "\"\n";
+  EXPECT_NO_THROW(network::check_toml_limits(text, "strings.toml"));
+}
+
+TEST(HostileInput, HugeStringsAndFilesAreRefused) {
+  const std::string big(TomlLimits::kMaxStringBytes + 1, 'x');
+  for (const std::string& line : {"s = \"" + big + "\"", "s = '" + big + "'",
+                                  "s = \"\"\"\n" + big + "\"\"\"", "\"" + big + "\" = 1"}) {
+    const std::string path = write_file("string.toml", "\n" + line + "\n");
+    EXPECT_TRUE(fails_at([&] { tools::load_scene(path); }, path, 2, line[0] == '"' ? 1 : 5,
+                         {"a string longer than"}))
+        << line.substr(0, 8);
+  }
+  const std::string path = write_file("big.toml", std::string(TomlLimits::kMaxBytes + 1, '#'));
+  EXPECT_TRUE(fails_at([&] { network::load_topology(path); }, path, 0, 0, {"bytes; at most"}));
+  const std::string scene = nettest::source_dir() + "/configs/scenes/pingpong.toml";
+  const std::string flag = "workload.from=\"" + big + "\"";
+  EXPECT_TRUE(fails_at([&] { tools::load_scene(scene, {flag}); }, "--set " + flag, 0, 0,
+                       {"a string longer than"}));
+}
+
+// A value echoed in a message is cut, so a megabyte of input does not come back as a megabyte of
+// error.
+TEST(HostileInput, MessagesEchoAtMostAFewKilobytes) {
+  const std::string scene = nettest::source_dir() + "/configs/scenes/pingpong.toml";
+  const std::string name(60000, 'P');
+  try {
+    tools::load_scene(scene, {"workload.from=" + name});
+    FAIL() << "accepted";
+  } catch (const network::ConfigError& e) {
+    EXPECT_LT(std::string(e.what()).size(), 1000u) << std::string(e.what()).substr(0, 300);
+    EXPECT_NE(std::string(e.what()).find(" bytes]..."), std::string::npos)
+        << std::string(e.what()).substr(0, 300);
+  }
+}
+
+}  // namespace
