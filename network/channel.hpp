@@ -6,7 +6,7 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
+#include <list>
 #include <string>
 #include <vector>
 
@@ -39,8 +39,9 @@ struct Channel {
   // direct: the link and the writer's end of it
   t800::Link* link = nullptr;
   int writer_end = 0;
-  // routed: messages delivered at `to` by its router, waiting for the reader
-  std::deque<t800::Message> mailbox;
+  // routed: messages delivered at `to` by its router, waiting for the reader (a list: an empty one
+  // allocates nothing, t800/link.hpp)
+  std::list<t800::Message> mailbox;
   sc_core::sc_event mail;
 };
 
