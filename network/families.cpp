@@ -10,9 +10,9 @@ namespace {
 constexpr Family kFamilies[] = {Family::tree, Family::chain, Family::ring, Family::mesh,
                                 Family::hypercube};
 
-// Generators are O(n^2) to validate; far beyond any transputer network anyone built, and it keeps a
-// mistyped "--set network.workers=1000000" from hanging the tool.
-constexpr int kMaxWorkers = 1023;
+// P0 and the workers: the largest network simulated (topology.hpp); it also keeps a mistyped
+// "--set network.workers=1000000" from hanging the tool.
+constexpr int kMaxWorkers = kMaxProcessors - 1;
 
 // A topology under construction: P0..Pn, P0.link0 to the host, every item at `where`.
 struct Builder {

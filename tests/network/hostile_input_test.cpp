@@ -112,6 +112,18 @@ TEST(HostileInput, HugeStringsAndFilesAreRefused) {
                        {"a string longer than"}));
 }
 
+// An absurd network is refused, not attempted: 40,000 transputers once ran the host out of memory
+// maps.
+TEST(HostileInput, MoreProcessorsThanSimulatedAreRefused) {
+  std::string text = "host = \"P0.link0\"\n";
+  for (int i = 0; i <= network::kMaxProcessors; ++i)
+    text += "[[processor]]\nname = \"P" + std::to_string(i) + "\"\n";
+  const std::string path = write_file("many.toml", text);
+  // The processor after the last one simulated: line 2 + 2 * kMaxProcessors.
+  EXPECT_TRUE(fails_at([&] { network::load_topology(path); }, path, 2 + 2 * network::kMaxProcessors,
+                       1, {"has 1025 processors; at most 1024 are simulated"}));
+}
+
 // A value echoed in a message is cut, so a megabyte of input does not come back as a megabyte of
 // error.
 TEST(HostileInput, MessagesEchoAtMostAFewKilobytes) {
