@@ -212,9 +212,9 @@ void Machine::pooled_thread(PooledThread& t) {
 
 std::vector<BlockedProcess> Machine::run() {
   finalise_channels();
-  for (auto& [p, body] : pending_)
-    handles_.push_back(
-        sc_core::sc_spawn([p, body] { run_body(p, body); }, sc_core::sc_gen_unique_name("proc")));
+  for (auto& pending : pending_)  // not a structured binding: clang 14 cannot capture those
+    handles_.push_back(sc_core::sc_spawn([p = pending.first, body = pending.second] { run_body(p, body); },
+                                         sc_core::sc_gen_unique_name("proc")));
   pending_.clear();
   if (options_.max_sim_s > 0 || options_.max_wall_s > 0)
     run_with_limits();

@@ -17,7 +17,7 @@ TEST_P(Scale, A1024TransputerNetworkRunsTheFarm) {
   const std::string family = GetParam();
   const auto o =
       cli_test::run("run configs/scenes/dynamics-farm.toml --set network.family=" + family +
-                    " --set network.workers=1023 --json 2>&1");
+                    " --set network.workers=1023 --json");
   ASSERT_EQ(o.exit_code, 0) << o.out.substr(0, 2000);
   const nlohmann::json r = nlohmann::json::parse(o.out);
   EXPECT_EQ(r["processors"].size(), 1024u);
