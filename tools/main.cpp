@@ -1,10 +1,13 @@
 // t800sim: the command line. libsystemc.so provides main() and calls sc_main().
 #include <cstdlib>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <systemc>
 
+#include "tools/cli_errors.hpp"
 #include "tools/commands.hpp"
 
 int sc_main(int argc, char* argv[]) {
@@ -23,6 +26,11 @@ int sc_main(int argc, char* argv[]) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    if (const auto message =
+            tools::explain_parse_error(app, std::vector<std::string>(argv + 1, argv + argc), e)) {
+      std::cerr << "error: " << *message << "\n";
+      return tools::kExitBadInput;
+    }
     const int code = app.exit(e);
     return code == 0 ? tools::kExitOk : tools::kExitBadInput;
   }

@@ -1,5 +1,6 @@
 #include "tools/run_inputs.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "tools/robot_file.hpp"
@@ -14,13 +15,23 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
   in.options.code_efficiency = scene.code_efficiency;
   in.options.keep_intervals = keep_intervals;
   in.options.fidelity = scene.fidelity;
-  // Workloads that compute declare their arithmetic precision; the scene loader has validated the choice.
-  if (scene.workload.has("precision"))
+  // Workloads that compute declare their arithmetic precision; the scene loader has validated the
+  // choice. The report says where the precision came from, above all when nobody chose it.
+  const auto& defaults = scene.workload_defaults;
+  if (scene.workload.has("precision")) {
     in.options.precision = *t800::parse_precision(scene.workload.text("precision"));
+    in.precision_source = std::find(defaults.begin(), defaults.end(), "precision") == defaults.end()
+                              ? "workload.precision"
+                              : "the default of workload " + scene.workload_kind +
+                                    "; set workload.precision to choose";
+  } else {
+    in.precision_source =
+        "the simulator's default; workload " + scene.workload_kind + " declares no precision";
+  }
   in.kind = scene.workload_kind;
   in.params = scene.workload;
-  // Files a workload names (robot, torque table, trajectory output) are relative to the scene that names
-  // them, like the scene's topology file.
+  // Files a workload names (robot, torque table, trajectory output) are relative to the scene that
+  // names them, like the scene's topology file.
   const auto relative_to_scene = [&](const std::string& name) {
     const std::filesystem::path path = scene.workload.text(name);
     return path.is_absolute() ? path : std::filesystem::path(scene.file).parent_path() / path;
@@ -34,8 +45,9 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
       in.robot = std::make_shared<const dynamics::RobotModel>(load_robot(resolved.string()));
     } catch (const network::ConfigError& e) {
       if (e.where().line > 0) throw;  // an error inside the robot file already says where
-      throw network::ConfigError(e.where(), e.message() + " (workload.robot = \"" + scene.workload.text("robot") +
-                                                "\", relative to the scene file " + scene.file + ")");
+      throw network::ConfigError(
+          e.where(), e.message() + " (workload.robot = \"" + scene.workload.text("robot") +
+                         "\", relative to the scene file " + scene.file + ")");
     }
   }
   return in;

@@ -2,11 +2,13 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cctype>
 #include <climits>
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
+#include <set>
 
 #include "network/families.hpp"
 #include "network/toml_util.hpp"
@@ -72,7 +74,8 @@ toml::table parse_override(const std::string& key, const std::string& value,
   return toml::parse(std::string_view(key + " = " + toml_quoted(value)), std::string_view(flag));
 }
 
-void apply_override(toml::table& root, const std::string& text) {
+// Applies one override and returns its key.
+std::string apply_override(toml::table& root, const std::string& text) {
   const std::string flag = "--set " + text;
   const SourcePos at{flag, 0, 0};
   const auto eq = text.find('=');
@@ -101,7 +104,7 @@ void apply_override(toml::table& root, const std::string& text) {
     toml::node* existing = dst->get(parts[i]);
     if (i + 1 == parts.size() || !existing) {
       dst->insert_or_assign(it->first, std::move(it->second));
-      return;
+      return key;
     }
     prefix += (prefix.empty() ? "" : ".") + parts[i];
     if (!existing->is_table())
@@ -111,6 +114,7 @@ void apply_override(toml::table& root, const std::string& text) {
     dst = existing->as_table();
     src = it->second.as_table();
   }
+  return key;  // not reached: the last part always returns
 }
 
 // Scene reading -----------------------------------------------------------------------------------
@@ -219,7 +223,9 @@ network::Topology SceneReader::topology(const toml::table* net) const {
     if (const toml::node* node = n.get(key); node && !family)
       fail(*node, "network." + std::string(key) +
                       " applies only to a generated network (network.family); a topology file "
-                      "sets each [[processor]] itself");
+                      "sets each [[processor]] itself. Give a family as well (--set "
+                      "network.family=tree replaces the topology file), or compare topology files "
+                      "(sweep --vary network.topology=a.toml,b.toml)");
   if (family) return generated(n, *given[0].second);
   if (given[0].first == "network.topology") return from_file(*given[0].second);
   const toml::node& inline_table = *given[0].second;
@@ -352,6 +358,7 @@ void SceneReader::workload(Scene& scene) const {
   for (const workloads::ParamSpec& spec : info->params) {
     const toml::node* value = t.get(spec.name);
     scene.workload.set(spec.name, value ? param(spec, *value, scene.topology) : spec.default_value);
+    if (!value) scene.workload_defaults.push_back(spec.name);
   }
 }
 
@@ -365,7 +372,15 @@ void SceneReader::calibration(Scene& scene) const {
   const toml::table& t = table(*node, "calibration");
   check_keys(t, {"file", "code_efficiency", "fitted"}, "[calibration]");
   if (const toml::node* file = t.get("file")) {
-    const fs::path path = fs::path(file_).parent_path() / text(*file, "calibration.file");
+    const std::string name = text(*file, "calibration.file");
+    const fs::path path = fs::path(file_).parent_path() / name;
+    std::error_code ec;
+    if (name.empty() || !fs::is_regular_file(path, ec))
+      fail(*file,
+           "calibration file '" + name + "' not found (looked for " + path.string() +
+               "; calibration.file is relative to the scene file): copy the calibration file "
+               "there, correct the path, or give code_efficiency and fitted in [calibration] "
+               "instead");
     const toml::table shared = network::parse_toml_file(path.string(), "calibration file");
     const toml::node* inner = shared.get("calibration");
     if (!inner || !inner->is_table())
@@ -452,15 +467,51 @@ Scene SceneReader::read() {
 
 }  // namespace
 
+// An override that names the network's source (network.topology, network.family or [topology])
+// replaces the scene file's source, so a family scene can be run on a topology file and the other
+// way round (`sweep --vary network.topology=a.toml,b.toml`). Keys set by other overrides stay, so
+// two overridden sources still clash. A topology file brings its own processors: the file's
+// network.workers and network.processor go with the family.
+void replace_network_source(toml::table& root, const std::string& key,
+                            const std::set<std::string>& overridden) {
+  static const std::vector<std::string> sources = {"network.topology", "network.family",
+                                                   "topology"};
+  if (std::find(sources.begin(), sources.end(), key) == sources.end()) return;
+  std::vector<std::string> replaced;
+  for (const std::string& other : sources)
+    if (other != key) replaced.push_back(other);
+  if (key != "network.family")
+    for (const char* family_key : {"network.workers", "network.processor"})
+      replaced.push_back(family_key);
+  toml::table* net = root["network"].as_table();
+  for (const std::string& other : replaced) {
+    if (overridden.count(other)) continue;
+    if (other == "topology")
+      root.erase("topology");
+    else if (net)
+      net->erase(other.substr(std::string("network.").size()));
+  }
+}
+
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
   toml::table root = network::parse_toml_file(path, "scene file");
-  for (const std::string& text : overrides) apply_override(root, text);
+  std::set<std::string> overridden;
+  for (const std::string& text : overrides) {
+    const std::string key = apply_override(root, text);
+    overridden.insert(key);
+    replace_network_source(root, key, overridden);
+  }
   return SceneReader(root, path).read();
 }
 
 std::string check_file(const std::string& path) {
   const toml::table root = network::parse_toml_file(path, "file");
-  if (root.contains("workload")) {
+  // A scene is recognised by any table only a scene has, so a scene missing its [workload] is
+  // reported as a scene ("no [workload] table"), not as a topology with unknown keys.
+  bool scene_keys = false;
+  for (const char* key : {"workload", "network", "topology", "calibration", "fidelity"})
+    scene_keys = scene_keys || root.contains(key);
+  if (scene_keys) {
     const Scene scene = load_scene(path);
     return "scene " + scene.name + ": " + plural(scene.topology.processors.size(), "processor") +
            ", " + plural(scene.topology.connections.size(), "link") + ", workload " +

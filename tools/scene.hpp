@@ -1,5 +1,6 @@
-// A scene = topology + workload + options, read once from a TOML file (plus --set overrides) into plain
-// structs. All validation happens here (DESIGN.md "How data flows", step 1).
+// A scene = topology + workload + options, read once from a TOML file (plus --set overrides) into
+// plain structs. All validation happens here (docs/architecture.md, "From a scene file to a
+// report").
 #pragma once
 
 #include <string>
@@ -20,16 +21,19 @@ struct Scene {
   t800::LinkConfig link;  // network.link_speed_mbps, network.link_protocol: defaults for every link
   std::string workload_kind;
   workloads::Params workload;  // validated against the workload's declared parameters
-  // [calibration]: the occam code-efficiency factor (t800::CostModel) and how it was fitted. 1 = uncalibrated.
+  std::vector<std::string> workload_defaults;  // the parameters the scene left at their defaults
+  // [calibration]: the occam code-efficiency factor (t800::CostModel) and how it was fitted. 1 =
+  // uncalibrated.
   double code_efficiency = 1.0;
   std::string calibration_note;
   // [fidelity]: links, compute, skip_numerics, reuse_steps (network/fidelity.hpp).
   network::Fidelity fidelity;
 };
 
-// Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the value is
-// read as a TOML value (4000, 2.5, "text", true, [1,2]) and, if that fails, as a bare string. Overrides are
-// applied before validation, so a bad override is reported naming the flag. Throws network::ConfigError.
+// Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the
+// value is read as a TOML value (4000, 2.5, "text", true, [1,2]) and, if that fails, as a bare
+// string. Overrides are applied before validation, so a bad override is reported naming the flag.
+// Throws network::ConfigError.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // `t800sim check FILE`: validates a scene or a topology file (a scene has a [workload] table).

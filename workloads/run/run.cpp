@@ -1,6 +1,9 @@
 #include "workloads/run/run.hpp"
 
+#include <algorithm>
 #include <chrono>
+
+#include "network/families.hpp"
 
 #include "workloads/run/workload.hpp"
 
@@ -30,7 +33,8 @@ std::vector<LinkReport> link_reports(const network::Machine& m, double total_us)
     for (int d = 0; d < 2; ++d) {
       const t800::LinkActivity& a = info.link->activity(d);
       LinkReport r;
-      r.name = m.node_name(info.node[d]) + "->" + m.node_name(info.node[1 - d]) + " (" + info.name + ")";
+      r.name =
+          m.node_name(info.node[d]) + "->" + m.node_name(info.node[1 - d]) + " (" + info.name + ")";
       r.bytes = a.bytes();
       r.messages = a.messages();
       r.busy_us = a.busy_us();
@@ -54,6 +58,40 @@ std::vector<TraceTrack> trace_tracks(const network::Machine& m, const RunReport&
   return tracks;
 }
 
+RunSetting setting_of(const RunInputs& in) {
+  RunSetting s;
+  s.kind = in.kind;
+  s.precision = in.options.precision;
+  s.precision_source = in.precision_source;
+  s.network_source = in.topology.source;
+  if (const auto family = network::family_of(in.topology))
+    s.network_family = std::string(network::to_string(*family));
+  for (const network::ProcessorSpec& p : in.topology.processors) {
+    const std::string type(t800::to_string(p.config.grade));
+    if (std::find(s.processor_types.begin(), s.processor_types.end(), type) ==
+        s.processor_types.end())
+      s.processor_types.push_back(type);
+  }
+  return s;
+}
+
+ResultValue setting_value(const RunSetting& s) {
+  ResultValue v;
+  v.set("kind", s.kind);
+  ResultValue precision;
+  precision.set("value", std::string(t800::to_string(s.precision)));
+  precision.set("source", s.precision_source);
+  v.set("precision", precision);
+  ResultValue net;
+  net.set("source", s.network_source);
+  net.set("family", s.network_family);
+  ResultValue types = ResultValue::list();
+  for (const std::string& t : s.processor_types) types.push(t);
+  net.set("processor_types", types);
+  v.set("network", net);
+  return v;
+}
+
 }  // namespace
 
 RunReport run(const RunInputs& in) {
@@ -64,6 +102,7 @@ RunReport run(const RunInputs& in) {
   workload->build(machine);
   RunReport report;
   report.name = in.name;
+  report.setting = setting_of(in);
   report.fidelity = in.options.fidelity;
   report.blocked = machine.run();
   report.simulated_us = machine.simulated_us();
@@ -82,6 +121,7 @@ ResultValue RunReport::to_value() const {
   v.set("simulated_us", simulated_us);
   v.set("wall_s", wall_s);
   v.set("events", std::int64_t(events));
+  v.set("setting", setting_value(setting));
   ResultValue f;
   f.set("links", std::string(t800::to_string(fidelity.links)));
   f.set("compute", std::string(t800::to_string(fidelity.compute)));

@@ -1,4 +1,5 @@
-// One simulation from plain inputs to a report: elaborate the machine, build the workload, run, account.
+// One simulation from plain inputs to a report: elaborate the machine, build the workload, run,
+// account.
 #pragma once
 
 #include <memory>
@@ -19,6 +20,19 @@ struct RunInputs {
   std::string kind;
   Params params;
   std::shared_ptr<const dynamics::RobotModel> robot;  // for workloads with a `robot` parameter
+  // Where options.precision came from, said in the report: a default is stated, never silent.
+  std::string precision_source = "the simulator's default";
+};
+
+// What ran, on what: every report states it, defaults included.
+struct RunSetting {
+  std::string kind;  // workload.kind
+  t800::Precision precision = t800::Precision::real64;
+  std::string precision_source;
+  std::string network_source;  // a topology file, "family:tree(9)", or the scene of an inline table
+  std::string
+      network_family;  // the family the network is link for link (network::family_of), or ""
+  std::vector<std::string> processor_types;  // distinct, in processor order
 };
 
 struct ProcessorReport {
@@ -29,7 +43,8 @@ struct ProcessorReport {
 struct LinkReport {
   std::string name;  // "P0.link1->P1.link0": the direction whose data it is
   std::int64_t bytes = 0, messages = 0;
-  double busy_us = 0, utilisation = 0;  // time its wire carries packets (its data, the reverse acknowledges)
+  double busy_us = 0,
+         utilisation = 0;  // time its wire carries packets (its data, the reverse acknowledges)
 };
 
 // One timeline of a trace: a processor's non-idle intervals (state compute or communicate, label
@@ -46,13 +61,16 @@ struct RunReport {
   std::string name;
   double simulated_us = 0;
   double wall_s = 0;
+  RunSetting setting;
   network::Fidelity fidelity;  // what the run modelled and skipped
-  std::uint64_t events = 0;  // SystemC delta cycles: one per batch of process activations at one time
+  std::uint64_t events =
+      0;  // SystemC delta cycles: one per batch of process activations at one time
   std::vector<ProcessorReport> processors;
   std::vector<LinkReport> links;
   std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
   ResultValue workload;
-  std::vector<TraceTrack> tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)
+  std::vector<TraceTrack>
+      tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)
 
   ResultValue to_value() const;
 };
