@@ -62,7 +62,7 @@ const char* to_string(Channel::Kind kind) {
 }
 
 // On a link the instruction only loads the DMA engine and deschedules; the process is rescheduled when the
-// engine has finished (t800-timing.md sections 3 and 6).
+// engine has finished (docs/t800-timing.md sections 3 and 6).
 void link_out(Process& p, t800::Link& link, int end, t800::Message m) {
   p.communication_cycles(t800::CostModel::communication_cycles(m.bytes, false));
   p.deschedule();

@@ -3,7 +3,7 @@
 // channels need.
 //
 // Use: declare channels, spawn processes, then run(). One Machine (one simulation) per OS process:
-// SystemC cannot be restarted (DESIGN.md).
+// SystemC cannot be restarted (docs/architecture.md).
 #pragma once
 
 #include <map>

@@ -42,7 +42,7 @@ double CostModel::memory_extra_per_access() const {
   return timing::kExternalExtraCycles + processor_.memory.wait_states;
 }
 
-// The overlap rule (t800-timing.md section 4, status U): the integer unit issues every FP instruction and moves
+// The overlap rule (docs/t800-timing.md section 4, status U): the integer unit issues every FP instruction and moves
 // its data; the FPU executes arithmetic concurrently. Within a block the FPU is busy for the sum of its execute
 // times, and an arithmetic instruction cannot execute before it is issued, so the block takes the longer of
 // the integer unit's work and the FPU's work plus the issue slots that feed it.

@@ -8,14 +8,14 @@
 
 namespace t800 {
 
-// Speed grades of the T800 (t800-timing.md section 1).
+// Speed grades of the T800 (docs/t800-timing.md section 1).
 enum class SpeedGrade { T800_20, T800_25, T800_30 };
 
 double cycle_ns(SpeedGrade grade);
 std::string_view to_string(SpeedGrade grade);
 std::optional<SpeedGrade> parse_speed_grade(std::string_view text);  // "T800-20", "T800-25", "T800-30"
 
-// Where code and data live (t800-timing.md section 5).
+// Where code and data live (docs/t800-timing.md section 5).
 enum class Placement { on_chip, external };
 std::string_view to_string(Placement placement);
 std::optional<Placement> parse_placement(std::string_view text);  // "onchip" or "external"
@@ -32,7 +32,7 @@ struct ProcessorConfig {
 };
 
 // T800 links acknowledge a byte as soon as its packet starts arriving; T414 links only after the whole packet
-// (t800-timing.md section 6).
+// (docs/t800-timing.md section 6).
 enum class LinkProtocol { overlapped, t414 };
 std::string_view to_string(LinkProtocol protocol);
 std::optional<LinkProtocol> parse_link_protocol(std::string_view text);  // "overlapped" or "t414"

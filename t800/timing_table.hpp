@@ -1,5 +1,5 @@
 // Every timing constant of the T800 model, in one table. Each row names its row in
-// ../shared/reference/t800-timing.md and its status there: S = stated by the source, D = derived from stated
+// docs/t800-timing.md and its status there: S = stated by the source, D = derived from stated
 // figures (arithmetic in the comment), U = a model assumption.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The cost model against the timing table (t800-timing.md sections 2, 4, 5).
+// The cost model against the timing table (docs/t800-timing.md sections 2, 4, 5).
 #include <gtest/gtest.h>
 
 #include "t800/cost_model.hpp"
@@ -62,7 +62,7 @@ TEST(CostModel, SineIsASoftwareRoutine) {
   one.sincos = 1;
   const auto c64 = CostModel(t800_20(), Precision::real64).cycles(one);
   const auto c32 = CostModel(t800_20(), Precision::real32).cycles(one);
-  // "hundreds of cycles" (t800-timing.md section 4), and fewer terms in REAL32.
+  // "hundreds of cycles" (docs/t800-timing.md section 4), and fewer terms in REAL32.
   EXPECT_GT(c64, 100);
   EXPECT_LT(c64, 1000);
   EXPECT_LT(c32, c64);

@@ -1,5 +1,5 @@
 // A message over h hops through software routers follows the store-and-forward formula built from the model's
-// own constants (t800-timing.md sections 3 and 6).
+// own constants (docs/t800-timing.md sections 3 and 6).
 #include <gtest/gtest.h>
 
 #include <cmath>

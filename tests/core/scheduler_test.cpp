@@ -1,5 +1,5 @@
 // The T800 scheduler: timeslicing of low-priority processes, preemption by high priority, internal
-// channels (t800-timing.md sections 3 and 7).
+// channels (docs/t800-timing.md sections 3 and 7).
 #include <gtest/gtest.h>
 
 #include "core_fixtures.hpp"

@@ -1,6 +1,6 @@
 // The derived subtask sets: 17 D + 61 C + 4 h (full) and 17 D + 43 C + 4 h (paper), and the kept
-// Coriolis list equal to stanford-arm.md's (typed in here as the independent reference; the code
-// derives it).
+// Coriolis list equal to the 43 terms worked out by hand from the arm's data (typed in here as the
+// independent reference; the code derives it).
 #include <gtest/gtest.h>
 
 #include <map>
@@ -59,7 +59,7 @@ TEST(SubtaskSets, ZeroInertiaAndGravityTermsAreTheDocumentedOnes) {
 }
 
 TEST(SubtaskSets, PaperCoriolisListMatchesStanfordArmReference) {
-  // stanford-arm.md, "The kept C terms, listed as i: jk".
+  // The kept C terms, listed as i: jk.
   const std::map<int, std::string> listed = {{1, "12 13 14 15 22 23 24 25 44 45 55"},
                                              {2, "11 14 15 23 24 25 44 45 55"},
                                              {3, "11 14 15 22 24 25 55"},

@@ -1,6 +1,6 @@
 // A counting scalar: Counted<T> computes exactly what T computes (same IEEE operations, same
 // order) and counts each operation into the OpCounts of the innermost active OpTally. Kernels
-// templated on the scalar type run once with it to learn their operation mix (DESIGN.md, "How data
+// templated on the scalar type run once with it to learn their operation mix (docs/architecture.md, "Programs: processes and
 // flows", step 4).
 #pragma once
 
