@@ -90,5 +90,30 @@ TEST(SubtaskSets, DroppedTermsAllInvolveJointSixAndAreSmall) {
   EXPECT_EQ(dropped, 18);
 }
 
+// The simplification's assumption, checked on the robot at hand: for the Stanford arm every dropped
+// term is at least 1/kNegligible times smaller than every kept Coriolis term; for Corke's PUMA 560
+// it is not, and the paper model is refused with a message naming the assumption.
+TEST(SubtaskSets, PaperSimplificationHoldsForTheStanfordArmOnly) {
+  const PaperSimplification stanford_arm = paper_simplification(stanford());
+  EXPECT_TRUE(stanford_arm.holds());
+  EXPECT_EQ(stanford_arm.dropped.size(), 18u);
+  EXPECT_LE(stanford_arm.largest_dropped, kNegligible * stanford_arm.smallest_kept);
+  const RobotModel puma =
+      tools::load_robot(std::string(T800SIM_SOURCE_DIR) + "/configs/robots/puma560.toml");
+  const PaperSimplification p = paper_simplification(puma);
+  EXPECT_FALSE(p.holds());
+  EXPECT_GT(p.largest_dropped, kNegligible * p.smallest_kept);
+  for (const Subtask& t : p.dropped) EXPECT_TRUE(t.i == 5 || t.j == 5 || t.k == 5) << t.name;
+  try {
+    derive_subtasks(puma, ModelVariant::paper);
+    FAIL() << "the paper model was derived for the PUMA 560";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    for (const char* words : {"Puma 560", "axial inertia", "negligible", "model \"full\""})
+      EXPECT_NE(what.find(words), std::string::npos) << words << ": " << what;
+  }
+  EXPECT_NO_THROW(derive_subtasks(puma, ModelVariant::full));
+}
+
 }  // namespace
 }  // namespace dynamics
