@@ -104,6 +104,12 @@ PointResult judge(const SweepArgs& a, const SweepPoint& point, const ChildOutcom
   nlohmann::json parsed;
   PointResult r = judge_point(point, outcome, parsed);
   if (outcome.timed_out) r.status = fmt::format("error: timed out after {} s", a.timeout_s);
+  // The child saw the point's values as --set flags; the row names them as the varied keys.
+  for (const auto& [key, value] : point) {
+    const std::string flag = "--set " + key + "=" + value;
+    for (auto at = r.status.find(flag); at != std::string::npos; at = r.status.find(flag, at))
+      r.status.erase(at, 6);
+  }
   if (report) *report = std::move(parsed);
   return r;
 }

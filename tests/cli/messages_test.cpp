@@ -53,7 +53,8 @@ TEST(Messages, CheckOfABadSceneSaysOnlyWhatIsWrong) {
   EXPECT_FALSE(has(o.out, "ok:")) << o.out;
   EXPECT_TRUE(has(o.out, scene + ":3:")) << o.out;
   // A scene without [workload] is still read as a scene, not as a topology with unknown keys.
-  const std::string no_workload = write(scratch() + "/nw.toml", "[network]\nfamily = \"tree\"\n");
+  const std::string no_workload =
+      write(scratch() + "/nw.toml", "[network]\nfamily = \"tree\"\nworkers = 3\n");
   const auto n = run("check " + no_workload + " 2>&1");
   EXPECT_EQ(n.exit_code, 2);
   EXPECT_TRUE(has(n.out, "no [workload] table")) << n.out;
