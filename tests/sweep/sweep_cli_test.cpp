@@ -73,6 +73,7 @@ TEST(SweepCommand, AFailingPointIsReportedAndTheOthersRun) {
   const std::string status = t[1][column(t, "status")];
   EXPECT_EQ(status.rfind("error: ", 0), 0u) << status;
   EXPECT_NE(status.find("workload.bytes=0"), std::string::npos) << status;
+  EXPECT_EQ(status.find("--set"), std::string::npos) << status;  // named as the varied key
   EXPECT_EQ(t[2][column(t, "status")], "ok");
 }
 
