@@ -53,7 +53,8 @@ std::string unknown_option(const CLI::App& command, const std::vector<std::strin
   const std::string flag = arg.rfind("--", 0) == 0 ? arg.substr(0, eq) : arg.substr(0, 2);
   std::string message = "unknown option " + flag + " for `t800sim " + command.get_name() + "`";
   const bool has_set = command.get_option_no_throw("--set") != nullptr;
-  const std::string bare = flag.substr(flag.find_first_not_of('-'));
+  const auto name_at = flag.find_first_not_of('-');
+  const std::string bare = name_at == std::string::npos ? "" : flag.substr(name_at);
   if (const auto key = scene_key_for(bare); key && has_set) {
     std::string value = "VALUE";
     if (eq != std::string::npos)
