@@ -87,6 +87,7 @@ void ExpressionEmitter::analyse() {
   std::vector<bool> cross(nodes.size(), false);
   std::vector<int> stack;
   auto use = [&](int n, int block) {
+    n = through(n);  // a sign change is folded into its consumer: its operand is what is used
     ++uses_[std::size_t(n)];
     if (nodes[std::size_t(n)].block != block) cross[std::size_t(n)] = true;
     if (!live_[std::size_t(n)]) {
@@ -100,11 +101,12 @@ void ExpressionEmitter::analyse() {
     const Node& node = nodes[std::size_t(stack.back())];
     stack.pop_back();
     if (node.a >= 0) use(node.a, node.block);
-    if (node.b >= 0 && node.b != node.a) use(node.b, node.block);  // x * x reads x once
+    if (node.b >= 0 && through(node.b) != through(node.a))  // x * x reads x once
+      use(node.b, node.block);
   }
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const NodeKind k = nodes[i].kind;
-    temporary_[i] = live_[i] && !leaf_kind(k) && !is_comparison(k) &&
+    temporary_[i] = live_[i] && !leaf_kind(k) && !is_comparison(k) && k != NodeKind::neg &&
                     (uses_[i] > 1 || cross[i] || is_routine(k));
     if (live_[i] && k == NodeKind::constant && nodes[i].value != 0.0) uses_constants_ = true;
   }
@@ -119,6 +121,7 @@ void ExpressionEmitter::analyse() {
     std::vector<int> walk;
     auto visit = [&](int n) {
       if (n < 0) return;
+      n = through(n);
       if (temporary(n) && n != defining) {
         last_use_[std::size_t(n)] = int(i);
         return;
@@ -137,7 +140,13 @@ void ExpressionEmitter::analyse() {
     if (temporary_[i] && last_use_[i] >= 0) release_at_.insert({last_use_[i], int(i)});
 }
 
+int ExpressionEmitter::through(int n) const {
+  while (n >= 0 && r_.nodes()[std::size_t(n)].kind == NodeKind::neg) n = r_.nodes()[std::size_t(n)].a;
+  return n;
+}
+
 bool ExpressionEmitter::memory_operand(int n) const {
+  n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
   if (temporary(n)) return true;
   return node.kind == NodeKind::load || (node.kind == NodeKind::constant && node.value != 0.0);
@@ -186,11 +195,12 @@ ExpressionEmitter::Plan ExpressionEmitter::plan(int n) {
   p.negated = sign(n);
 
   auto two = [&](int x) {
+    x = through(x);
     const Node& k = r_.nodes()[std::size_t(x)];
     return k.kind == NodeKind::constant && k.value == 2.0 && !temporary(x);
   };
   const int nl = need(p.left), nr = need(p.right);
-  if (p.op == NodeKind::mul && p.left == p.right) {
+  if (p.op == NodeKind::mul && through(p.left) == through(p.right)) {
     p.how = Plan::How::square;
     p.first = p.left;
     p.need = std::max(nl, 2);
@@ -260,6 +270,7 @@ int ExpressionEmitter::need_expanded(int n) {
 // How a listing names an operand: an array element as subscripted, a constant by its value, a
 // local variable by its node number, an inlined subexpression as (...).
 std::string ExpressionEmitter::describe(int n) const {
+  n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
   if (temporary(n)) return "t" + std::to_string(n);
   switch (node.kind) {
@@ -284,6 +295,7 @@ void ExpressionEmitter::operation(Op op, const std::string& note) {
 }
 
 void ExpressionEmitter::leaf_address(int n) {
+  n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
   const std::string what = describe(n);
   if (temporary(n)) {
@@ -304,6 +316,7 @@ void ExpressionEmitter::leaf_address(int n) {
 }
 
 void ExpressionEmitter::load(int n) {
+  n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
   if (!temporary(n) && node.kind == NodeKind::constant && node.value == 0.0) {
     operation(real64_ ? Op::fpldzerodb : Op::fpldzerosn, "0.0");
@@ -317,10 +330,12 @@ void ExpressionEmitter::load(int n) {
   sink_.emit(in);
 }
 
+// Leaves the magnitude of n (as its code computes it) on the stack and returns n's sign.
 bool ExpressionEmitter::value(int n) {
-  if (memory_operand(n) || r_.nodes()[std::size_t(n)].kind == NodeKind::constant) {
-    load(n);
-    return temporary(n) ? sign(n) : false;
+  const int core = through(n);
+  if (memory_operand(core) || r_.nodes()[std::size_t(core)].kind == NodeKind::constant) {
+    load(core);
+    return sign(n);
   }
   return expand(n);
 }
@@ -437,8 +452,8 @@ void ExpressionEmitter::binary(int n) {
       in.op = p.op == NodeKind::add ? (real64_ ? Op::fpldnladddb : Op::fpldnladdsn)
                                     : (real64_ ? Op::fpldnlmuldb : Op::fpldnlmulsn);
       in.real64 = real64_;
-      const Node& m = r_.nodes()[std::size_t(p.second)];
-      in.data = leaf_memory(r_, m, temporary(p.second));
+      const int operand = through(p.second);
+      in.data = leaf_memory(r_, r_.nodes()[std::size_t(operand)], temporary(operand));
       in.note = note;
       sink_.emit(in);
       return;

@@ -49,6 +49,7 @@ class ExpressionEmitter {
   struct Plan;  // how a binary operation is evaluated
   bool temporary(int n) const { return temporary_[std::size_t(n)]; }
   bool memory_operand(int n) const;
+  int through(int n) const;  // n without the sign changes around it
   int need(int n);
   int need_expanded(int n);
   bool sign(int n);

@@ -76,7 +76,7 @@ TEST(Scene, GeneratedFamily) {
                  "direction = \"both\"\n");
   const tools::Scene s = load_scene(path);
   EXPECT_EQ(s.topology.processors.size(), 7u);
-  EXPECT_EQ(s.topology.processors[6].config.grade, t800::SpeedGrade::T800_25);
+  EXPECT_EQ(s.topology.processors[6].config.type, t800::ProcessorType::T800_25);
   EXPECT_EQ(s.workload.text("direction"), "both");
   EXPECT_EQ(s.workload.integer("messages"), 64);
 }

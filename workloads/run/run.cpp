@@ -56,12 +56,17 @@ std::vector<TraceTrack> trace_tracks(const network::Machine& m, const RunReport&
 
 }  // namespace
 
-RunReport run(const RunInputs& in) {
-  const auto start = std::chrono::steady_clock::now();
-  network::Machine machine(in.topology, in.options);
+std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& in) {
   std::unique_ptr<Workload> workload =
       make_workload(in.kind, WorkloadContext{in.params, in.topology, in.robot.get()});
   workload->build(machine);
+  return workload;
+}
+
+RunReport run(const RunInputs& in) {
+  const auto start = std::chrono::steady_clock::now();
+  network::Machine machine(in.topology, in.options);
+  std::unique_ptr<Workload> workload = build_workload(machine, in);
   RunReport report;
   report.name = in.name;
   report.fidelity = in.options.fidelity;

@@ -60,4 +60,9 @@ struct RunReport {
 // Runs one simulation. Only one per OS process (SystemC cannot be restarted).
 RunReport run(const RunInputs& inputs);
 
+class Workload;
+// What run() does before running: the workload of `inputs` built on `machine` (its processes placed,
+// its code declared). Kept alive while the machine is used.
+std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& inputs);
+
 }  // namespace workloads
