@@ -14,6 +14,7 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
   in.options.code_efficiency = scene.code_efficiency;
   in.options.keep_intervals = keep_intervals;
   in.options.fidelity = scene.fidelity;
+  in.options.checked = scene.run_time_checks;
   // Workloads that compute declare their arithmetic precision; the scene loader has validated the choice.
   if (scene.workload.has("precision"))
     in.options.precision = *t800::parse_precision(scene.workload.text("precision"));

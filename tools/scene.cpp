@@ -132,6 +132,8 @@ class SceneReader {
   std::string text_or(const toml::table& table, const std::string& key, std::string fallback) const;
 
   t800::LinkConfig link_config(const toml::table* net, const network::Topology& topology) const;
+  void apply_processor_keys(const toml::table& net, t800::ProcessorConfig& config) const;
+  void apply_processor_keys(const toml::table& net, network::Topology& topology) const;
   network::Topology topology(const toml::table* net) const;
   network::Topology generated(const toml::table& net, const toml::node& family) const;
   network::Topology from_file(const toml::node& path) const;
@@ -222,36 +224,28 @@ network::Topology SceneReader::topology(const toml::table* net) const {
          "this scene has both " +
              given[0].first + " and " + given[1].first);
   const bool family = given[0].first == "network.family";
-  for (const char* key : {"workers", "processor", "memory", "wait_states"})
-    if (const toml::node* node = n.get(key); node && !family)
-      fail(*node, "network." + std::string(key) +
-                      " applies only to a generated network (network.family); a topology file "
-                      "sets each [[processor]] itself");
+  if (const toml::node* node = n.get("workers"); node && !family)
+    fail(*node,
+         "network.workers applies only to a generated network (network.family); a topology file "
+         "lists its processors itself");
   if (family) return generated(n, *given[0].second);
-  if (given[0].first == "network.topology") return from_file(*given[0].second);
-  const toml::node& inline_table = *given[0].second;
-  if (!inline_table.is_table())
-    fail(inline_table, "'topology': expected a table, got " + type_name(inline_table) +
-                           "; to name a topology file, use network.topology");
-  return network::parse_topology(*inline_table.as_table(), file_);
+  network::Topology t;
+  if (given[0].first == "network.topology") {
+    t = from_file(*given[0].second);
+  } else {
+    const toml::node& inline_table = *given[0].second;
+    if (!inline_table.is_table())
+      fail(inline_table, "'topology': expected a table, got " + type_name(inline_table) +
+                             "; to name a topology file, use network.topology");
+    t = network::parse_topology(*inline_table.as_table(), file_);
+  }
+  apply_processor_keys(n, t);
+  return t;
 }
 
-network::Topology SceneReader::generated(const toml::table& net, const toml::node& family) const {
-  const std::string name = text(family, "network.family");
-  auto parsed = network::parse_family(name);
-  if (!parsed)
-    fail(family, "unknown network family '" + name + "'; valid families are " +
-                     join(network::family_names()));
-  const toml::node* workers = net.get("workers");
-  if (!workers)
-    fail(family, "network.family = \"" + name +
-                     "\" needs network.workers, the number of workers besides P0 (e.g. 3)");
-  if (!workers->is_integer())
-    fail(*workers, "'network.workers': expected an integer, got " + type_name(*workers));
-  const std::int64_t count = *workers->value<std::int64_t>();
-  if (count < INT_MIN || count > INT_MAX)
-    fail(*workers, "network.workers = " + std::to_string(count) + " is out of range");
-  t800::ProcessorConfig config;
+// network.processor, network.memory, network.wait_states: the type and memory placement of every
+// processor, generated or from a topology file (where they override its [[processor]] settings).
+void SceneReader::apply_processor_keys(const toml::table& net, t800::ProcessorConfig& config) const {
   if (const toml::node* type = net.get("processor")) {
     const std::string name = text(*type, "network.processor");
     auto parsed_type = t800::parse_processor_type(name);
@@ -278,6 +272,33 @@ network::Topology SceneReader::generated(const toml::table& net, const toml::nod
                     " is out of range: give the wait states per external access, 0 to 1000");
     config.memory.wait_states = static_cast<int>(n);
   }
+}
+
+void SceneReader::apply_processor_keys(const toml::table& net, network::Topology& topology) const {
+  for (network::ProcessorSpec& spec : topology.processors) {
+    t800::ProcessorConfig config = spec.config;
+    apply_processor_keys(net, config);
+    spec.config = config;
+  }
+}
+
+network::Topology SceneReader::generated(const toml::table& net, const toml::node& family) const {
+  const std::string name = text(family, "network.family");
+  auto parsed = network::parse_family(name);
+  if (!parsed)
+    fail(family, "unknown network family '" + name + "'; valid families are " +
+                     join(network::family_names()));
+  const toml::node* workers = net.get("workers");
+  if (!workers)
+    fail(family, "network.family = \"" + name +
+                     "\" needs network.workers, the number of workers besides P0 (e.g. 3)");
+  if (!workers->is_integer())
+    fail(*workers, "'network.workers': expected an integer, got " + type_name(*workers));
+  const std::int64_t count = *workers->value<std::int64_t>();
+  if (count < INT_MIN || count > INT_MAX)
+    fail(*workers, "network.workers = " + std::to_string(count) + " is out of range");
+  t800::ProcessorConfig config;
+  apply_processor_keys(net, config);
   return network::generate(*parsed, static_cast<int>(count), config, pos(*workers));
 }
 
@@ -434,7 +455,7 @@ void SceneReader::fidelity(Scene& scene) const {
   const toml::node* node = root_.get("fidelity");
   if (!node) return;
   const toml::table& t = table(*node, "fidelity");
-  check_keys(t, {"links", "compute", "skip_numerics", "reuse_steps"}, "[fidelity]");
+  check_keys(t, {"links", "compute", "compute_cost", "skip_numerics", "reuse_steps"}, "[fidelity]");
   if (const toml::node* links = t.get("links")) {
     const std::string name = text(*links, "fidelity.links");
     const auto parsed = t800::parse_link_fidelity(name);
