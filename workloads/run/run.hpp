@@ -21,9 +21,20 @@ struct RunInputs {
   std::shared_ptr<const dynamics::RobotModel> robot;  // for workloads with a `robot` parameter
 };
 
+// What lives where in a processor's memory (t800/memory_map.hpp).
+struct FootprintReport {
+  int on_chip_bytes = 0;
+  int reserved_bytes = 0, workspace_bytes = 0, data_bytes = 0, code_bytes = 0, library_bytes = 0;
+  int external_bytes = 0;               // of those, in external memory
+  std::vector<std::string> off_chip;    // the regions placed in external memory
+  int external_access_cycles = 0;       // an external access, wait states included
+};
+
 struct ProcessorReport {
   std::string name;
+  std::string type;  // "T800-20"
   double busy_us = 0, compute_us = 0, communicate_us = 0, idle_us = 0, utilisation = 0;
+  FootprintReport memory;
 };
 
 struct LinkReport {
@@ -47,6 +58,7 @@ struct RunReport {
   double simulated_us = 0;
   double wall_s = 0;
   network::Fidelity fidelity;  // what the run modelled and skipped
+  bool run_time_checks = true;  // compiled into the generated code
   std::uint64_t events = 0;  // SystemC delta cycles: one per batch of process activations at one time
   std::vector<ProcessorReport> processors;
   std::vector<LinkReport> links;
