@@ -26,7 +26,7 @@ void internal_out(Process& p, Channel& c, t800::Message m) {
     c.handed_over.notify(sc_core::SC_ZERO_TIME);
     return;
   }
-  p.communication_cycles(t800::timing::kCommFixed);
+  p.communication_cycles(t800::timing::communication_setup_cycles());
   c.slot = std::move(m);
   c.waiting_writer = &p;
   p.deschedule();
@@ -42,7 +42,7 @@ t800::Message internal_in(Process& p, Channel& c) {
     c.handed_over.notify(sc_core::SC_ZERO_TIME);
     return std::move(c.slot);
   }
-  p.communication_cycles(t800::timing::kCommFixed);
+  p.communication_cycles(t800::timing::communication_setup_cycles());
   c.waiting_reader = &p;
   p.deschedule();
   while (c.waiting_reader == &p) sc_core::wait(c.handed_over);
@@ -105,7 +105,7 @@ t800::Message receive(Process& p, Channel& c) {
     case Channel::Kind::internal: return internal_in(p, c);
     case Channel::Kind::direct: return link_in(p, *c.link, 1 - c.writer_end);
     case Channel::Kind::routed: {
-      p.communication_cycles(t800::timing::kCommFixed);
+      p.communication_cycles(t800::timing::communication_setup_cycles());
       if (c.mailbox.empty()) {
         p.deschedule();
         while (c.mailbox.empty()) sc_core::wait(c.mail);

@@ -20,8 +20,12 @@ void Process::compute(std::int64_t cycles, const std::string& label) {
 }
 
 void Process::compute(const t800::OperationMix& mix, const std::string& label) {
+  compute(t800::ComputeWork{mix, nullptr}, label);
+}
+
+void Process::compute(const t800::ComputeWork& work, const std::string& label) {
   if (on_host()) return;
-  compute(machine_.cost_model(node_).cycles(mix), label);
+  compute(machine_.compute_model(node_).cycles(work), label);
 }
 
 void Process::communication_cycles(std::int64_t cycles) {
@@ -53,12 +57,12 @@ t800::Message Process::in(Channel& channel) {
 void Process::par(const std::vector<Body>& branches) {
   std::vector<Process*> children;
   for (std::size_t i = 0; i < branches.size(); ++i) {
-    compute(t800::timing::kStartProcess, "startp");
+    compute(t800::timing::start_process_cycles(), "startp");
     const Body& body = branches[i];
     children.push_back(&machine_.spawn(node_, name() + "." + std::to_string(i), descriptor_.priority,
                                        [body](Process& child) {
                                          body(child);
-                                         child.compute(t800::timing::kEndProcess, "endp");
+                                         child.compute(t800::timing::end_process_cycles(), "endp");
                                        }));
   }
   set_status("waiting for its parallel branches");

@@ -10,6 +10,7 @@
 
 #include <systemc>
 
+#include "t800/compute_work.hpp"
 #include "t800/cpu.hpp"
 #include "t800/message.hpp"
 #include "t800/operation_mix.hpp"
@@ -28,6 +29,9 @@ class Process {
   // Runs a block of computation on this process's CPU.
   void compute(std::int64_t cycles, const std::string& label = {});
   void compute(const t800::OperationMix& mix, const std::string& label = {});
+  // Recorded kernels are timed from their T800 code (fidelity.compute_cost = "instructions"), or
+  // by their mix (compute_cost = "mix").
+  void compute(const t800::ComputeWork& work, const std::string& label = {});
   // Sends a message and returns when it has been taken (occam's synchronised `!`).
   void out(Channel& channel, t800::Message message);
   // Waits for and returns the next message on the channel (occam's `?`).

@@ -23,6 +23,7 @@ int sc_main(int argc, char* argv[]) {
   tools::add_sweep_command(app);
   tools::add_merge_command(app);
   tools::add_vcd_command(app);
+  tools::add_listing_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -15,6 +15,7 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
   in.options.code_efficiency = scene.code_efficiency;
   in.options.keep_intervals = keep_intervals;
   in.options.fidelity = scene.fidelity;
+  in.options.checked = scene.run_time_checks;
   // Workloads that compute declare their arithmetic precision; the scene loader has validated the
   // choice. The report says where the precision came from, above all when nobody chose it.
   const auto& defaults = scene.workload_defaults;

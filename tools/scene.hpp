@@ -26,8 +26,10 @@ struct Scene {
   // uncalibrated.
   double code_efficiency = 1.0;
   std::string calibration_note;
-  // [fidelity]: links, compute, skip_numerics, reuse_steps (network/fidelity.hpp).
+  // [fidelity]: links, compute, compute_cost, skip_numerics, reuse_steps (network/fidelity.hpp).
   network::Fidelity fidelity;
+  // [compiler] run_time_checks: occam's run-time checks compiled in (the compiler's default).
+  bool run_time_checks = true;
 };
 
 // Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the

@@ -27,6 +27,16 @@ const std::vector<WorkloadInfo>& workload_catalog() {
            {"from", T::text, std::string{}, "sending processor (default: the host's processor)", {}, {}, {}},
            {"to", T::text, std::string{}, "receiving processor (default: a neighbour of `from`)", {}, {}, {}},
        }},
+      {"livermore7",
+       "Livermore loop 7 (equation of state fragment, 16 flops per element) on one processor: "
+       "its rate against INMOS's published MFLOPS",
+       {
+           {"elements", T::integer, std::int64_t{101}, "loop length n (u has n + 6 elements)", 1, 1e6, {}},
+           {"repeat", T::integer, std::int64_t{1}, "times the loop runs", 1, 1e6, {}},
+           {"precision", T::text, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {},
+            {"real32", "real64"}},
+           {"processor", T::text, std::string{}, "the processor that runs it (default: the first)", {}, {}, {}},
+       }},
       {"dynamics-farm",
        "one forward-dynamics evaluation (D, C, h of the robot) farmed from a master to workers",
        {

@@ -68,7 +68,11 @@ struct ExpressionEmitter::Plan {
 };
 
 ExpressionEmitter::ExpressionEmitter(const Recording& recording, EmitSink& sink, Frame& frame)
-    : r_(recording), sink_(sink), frame_(frame), real64_(recording.real64()) {
+    : r_(recording),
+      sink_(sink),
+      frame_(frame),
+      real64_(recording.real64()),
+      words_(recording.real64() ? 2 : 1) {
   const std::size_t n = r_.nodes().size();
   live_.assign(n, false);
   temporary_.assign(n, false);
@@ -87,6 +91,7 @@ void ExpressionEmitter::analyse() {
   std::vector<bool> cross(nodes.size(), false);
   std::vector<int> stack;
   auto use = [&](int n, int block) {
+    n = through(n);  // a sign change is folded into its consumer: its operand is what is used
     ++uses_[std::size_t(n)];
     if (nodes[std::size_t(n)].block != block) cross[std::size_t(n)] = true;
     if (!live_[std::size_t(n)]) {
@@ -100,11 +105,12 @@ void ExpressionEmitter::analyse() {
     const Node& node = nodes[std::size_t(stack.back())];
     stack.pop_back();
     if (node.a >= 0) use(node.a, node.block);
-    if (node.b >= 0 && node.b != node.a) use(node.b, node.block);  // x * x reads x once
+    if (node.b >= 0 && through(node.b) != through(node.a))  // x * x reads x once
+      use(node.b, node.block);
   }
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const NodeKind k = nodes[i].kind;
-    temporary_[i] = live_[i] && !leaf_kind(k) && !is_comparison(k) &&
+    temporary_[i] = live_[i] && !leaf_kind(k) && !is_comparison(k) && k != NodeKind::neg &&
                     (uses_[i] > 1 || cross[i] || is_routine(k));
     if (live_[i] && k == NodeKind::constant && nodes[i].value != 0.0) uses_constants_ = true;
   }
@@ -119,6 +125,7 @@ void ExpressionEmitter::analyse() {
     std::vector<int> walk;
     auto visit = [&](int n) {
       if (n < 0) return;
+      n = through(n);
       if (temporary(n) && n != defining) {
         last_use_[std::size_t(n)] = int(i);
         return;
@@ -137,7 +144,13 @@ void ExpressionEmitter::analyse() {
     if (temporary_[i] && last_use_[i] >= 0) release_at_.insert({last_use_[i], int(i)});
 }
 
+int ExpressionEmitter::through(int n) const {
+  while (n >= 0 && r_.nodes()[std::size_t(n)].kind == NodeKind::neg) n = r_.nodes()[std::size_t(n)].a;
+  return n;
+}
+
 bool ExpressionEmitter::memory_operand(int n) const {
+  n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
   if (temporary(n)) return true;
   return node.kind == NodeKind::load || (node.kind == NodeKind::constant && node.value != 0.0);
@@ -186,11 +199,12 @@ ExpressionEmitter::Plan ExpressionEmitter::plan(int n) {
   p.negated = sign(n);
 
   auto two = [&](int x) {
+    x = through(x);
     const Node& k = r_.nodes()[std::size_t(x)];
     return k.kind == NodeKind::constant && k.value == 2.0 && !temporary(x);
   };
   const int nl = need(p.left), nr = need(p.right);
-  if (p.op == NodeKind::mul && p.left == p.right) {
+  if (p.op == NodeKind::mul && through(p.left) == through(p.right)) {
     p.how = Plan::How::square;
     p.first = p.left;
     p.need = std::max(nl, 2);
@@ -260,6 +274,7 @@ int ExpressionEmitter::need_expanded(int n) {
 // How a listing names an operand: an array element as subscripted, a constant by its value, a
 // local variable by its node number, an inlined subexpression as (...).
 std::string ExpressionEmitter::describe(int n) const {
+  n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
   if (temporary(n)) return "t" + std::to_string(n);
   switch (node.kind) {
@@ -284,6 +299,7 @@ void ExpressionEmitter::operation(Op op, const std::string& note) {
 }
 
 void ExpressionEmitter::leaf_address(int n) {
+  n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
   const std::string what = describe(n);
   if (temporary(n)) {
@@ -304,6 +320,7 @@ void ExpressionEmitter::leaf_address(int n) {
 }
 
 void ExpressionEmitter::load(int n) {
+  n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
   if (!temporary(n) && node.kind == NodeKind::constant && node.value == 0.0) {
     operation(real64_ ? Op::fpldzerodb : Op::fpldzerosn, "0.0");
@@ -317,10 +334,12 @@ void ExpressionEmitter::load(int n) {
   sink_.emit(in);
 }
 
+// Leaves the magnitude of n (as its code computes it) on the stack and returns n's sign.
 bool ExpressionEmitter::value(int n) {
-  if (memory_operand(n) || r_.nodes()[std::size_t(n)].kind == NodeKind::constant) {
-    load(n);
-    return temporary(n) ? sign(n) : false;
+  const int core = through(n);
+  if (memory_operand(core) || r_.nodes()[std::size_t(core)].kind == NodeKind::constant) {
+    load(core);
+    return sign(n);
   }
   return expand(n);
 }
@@ -437,8 +456,8 @@ void ExpressionEmitter::binary(int n) {
       in.op = p.op == NodeKind::add ? (real64_ ? Op::fpldnladddb : Op::fpldnladdsn)
                                     : (real64_ ? Op::fpldnlmuldb : Op::fpldnlmulsn);
       in.real64 = real64_;
-      const Node& m = r_.nodes()[std::size_t(p.second)];
-      in.data = leaf_memory(r_, m, temporary(p.second));
+      const int operand = through(p.second);
+      in.data = leaf_memory(r_, r_.nodes()[std::size_t(operand)], temporary(operand));
       in.note = note;
       sink_.emit(in);
       return;
@@ -455,7 +474,7 @@ void ExpressionEmitter::binary(int n) {
       return;
     case Plan::How::spill: {
       value(p.first);
-      const int spill = frame_.allocate_temporary();
+      const int spill = frame_.allocate_temporary(words_);
       sink_.emit({Op::ldlp, spill, 0, false, {}, "spill"});
       store_fp({Region::workspace, -1}, "spill");
       value(p.second);
@@ -476,7 +495,7 @@ void ExpressionEmitter::binary(int n) {
         sink_.emit(in);
         finish(p.first == p.left);  // the spilled (first) operand is on top now
       }
-      frame_.release_temporary(spill);
+      frame_.release_temporary(spill, words_);
       return;
     }
   }
@@ -494,18 +513,24 @@ void ExpressionEmitter::store_fp(MemoryRef where, const std::string& note) {
 
 void ExpressionEmitter::release_after(int event) {
   auto [begin, end] = release_at_.equal_range(event);
-  for (auto it = begin; it != end; ++it) frame_.release_temporary(slot_[std::size_t(it->second)]);
+  for (auto it = begin; it != end; ++it) frame_.release_temporary(slot_[std::size_t(it->second)], words_);
 }
 
 void ExpressionEmitter::define(int n, int event) {
   if (!temporary(n)) return;
+  if (!sink_.target().fpu) {
+    const int value = soft_compute(n);
+    release_after(event);
+    slot_[std::size_t(n)] = value;
+    return;
+  }
   const Node& node = r_.nodes()[std::size_t(n)];
   const std::string name = describe(n);
   if (is_routine(node.kind)) {
     // A call destroys the FP stack: the argument goes through the workspace, by value (REAL32, in
     // an integer register) or by address (REAL64); the result comes back on the FP stack.
     true_value(node.a);
-    const int argument = frame_.allocate_temporary();
+    const int argument = frame_.allocate_temporary(words_);
     sink_.emit({Op::ldlp, argument, 0, false, {}, "argument"});
     store_fp({Region::workspace, -1}, "argument");
     if (real64_)
@@ -515,17 +540,22 @@ void ExpressionEmitter::define(int n, int event) {
     const CodeUnit& routine = library_routine(node.kind, real64_, sink_.target());
     sink_.emit({Op::call, kLibraryDistance, 0, false, {Region::workspace, -1}, routine.name});
     sink_.call(routine);
-    frame_.release_temporary(argument);
+    frame_.release_temporary(argument, words_);
   } else {
     expand(n);
   }
   release_after(event);
-  slot_[std::size_t(n)] = frame_.allocate_temporary();
+  slot_[std::size_t(n)] = frame_.allocate_temporary(words_);
   sink_.emit({Op::ldlp, slot_[std::size_t(n)], 0, false, {}, name + " :="});
   store_fp({Region::workspace, -1}, name + " :=");
 }
 
 void ExpressionEmitter::store(int node, int access, int event) {
+  if (!sink_.target().fpu) {
+    soft_store(node, access);
+    release_after(event);
+    return;
+  }
   true_value(node);
   sink_.address(access);
   MemoryRef where{Region::array, r_.accesses()[std::size_t(access)].array};
@@ -539,14 +569,16 @@ void ExpressionEmitter::test(int comparison, bool outcome, int event) {
   const Node& node = r_.nodes()[std::size_t(comparison)];
   if (!is_comparison(node.kind))
     throw std::logic_error("ExpressionEmitter::test: not a comparison");
-  if (sign(node.a) || sign(node.b)) {
+  if (!sink_.target().fpu) {
+    soft_call(node.kind, through(node.a), through(node.b), -1);
+  } else if (sign(node.a) || sign(node.b)) {
     true_value(node.a);
     true_value(node.b);
     operation(fp_instruction(node.kind), "compare");
   } else {
     binary(comparison);
   }
-  if (sink_.target().checked) operation(Op::fpchkerror, "check FP error");
+  if (sink_.target().checked && sink_.target().fpu) operation(Op::fpchkerror, "check FP error");
   // cj jumps when the condition is false.
   sink_.emit({Op::cj, 4, outcome ? 0 : 1, false, {}, outcome ? "IF (true)" : "IF (false: jump)"});
   release_after(event);
@@ -554,6 +586,129 @@ void ExpressionEmitter::test(int comparison, bool outcome, int event) {
 
 int ExpressionEmitter::constant_bytes() const {
   return int(constants_.size()) * (real64_ ? 8 : 4);
+}
+
+// ---- Without an FPU (a T414): every REAL operation a call of the run-time library ----
+// The INMOS compiler calls REAL32OPERR%CHK(a, op, b) for each operation (its REAL64 twin with
+// addresses): the operands' values (REAL32, a word each) or addresses (REAL64) go in the integer
+// registers, `ldc op` between them, and the result comes back in A (REAL32) or through a pointer
+// (REAL64), to be stored in the workspace: a call destroys the register stack, so every
+// intermediate result is a workspace word.
+
+// Pushes a REAL32 operand's value, or a REAL64 operand's address, onto the integer stack.
+void ExpressionEmitter::soft_push(int n, int slot) {
+  const MemoryRef ws{Region::workspace, -1};
+  if (slot >= 0) {
+    sink_.emit({real64_ ? Op::ldlp : Op::ldl, slot, 0, false, real64_ ? MemoryRef{} : ws, "t"});
+    return;
+  }
+  const Node& node = r_.nodes()[std::size_t(n)];
+  if (temporary(n)) {
+    soft_push(n, slot_[std::size_t(n)]);
+    return;
+  }
+  if (node.kind == NodeKind::constant && node.value == 0.0 && !real64_) {
+    sink_.emit({Op::ldc, 0, 0, false, {}, "0.0"});
+    return;
+  }
+  leaf_address(n);
+  if (!real64_) sink_.emit({Op::ldnl, 0, 0, false, leaf_memory(r_, node, false), describe(n)});
+}
+
+// The workspace word holding n's value (a new one for a computed node; -1 for a memory operand,
+// which is pushed from where it is).
+int ExpressionEmitter::soft_value(int n) {
+  n = through(n);
+  const Node& node = r_.nodes()[std::size_t(n)];
+  if (temporary(n) || leaf_kind(node.kind)) return -1;
+  return soft_compute(n);
+}
+
+// Computes op node n into a fresh workspace word and returns it.
+int ExpressionEmitter::soft_compute(int n) {
+  const Node& node = r_.nodes()[std::size_t(n)];
+  const int result = frame_.allocate_temporary(words_);
+  switch (node.kind) {
+    case NodeKind::neg: {  // the sign bit flipped
+      const int a = soft_value(node.a);
+      soft_push(through(node.a), a);
+      if (real64_) {
+        sink_.emit({Op::ldnl, 1, 0, false, {Region::workspace, -1}, "high word"});
+      }
+      sink_.emit({Op::mint, 0, 0, false, {}, "sign bit"});
+      sink_.emit({Op::xor_, 0, 0, false, {}, "negate"});
+      sink_.emit({Op::stl, result + (real64_ ? 1 : 0), 0, false, {Region::workspace, -1}, "t :="});
+      if (a >= 0) frame_.release_temporary(a, words_);
+      return result;
+    }
+    case NodeKind::abs:
+    case NodeKind::sqrt:
+    case NodeKind::sine:
+    case NodeKind::cosine:
+      soft_call(node.kind, through(node.a), -1, result);
+      return result;
+    default:
+      break;
+  }
+  const Plan p = plan(n);  // the operation after the signs are folded in
+  soft_call(p.op, through(p.left), through(p.right), result);
+  if (p.negated) {
+    sink_.emit({Op::ldl, result + (real64_ ? 1 : 0), 0, false, {Region::workspace, -1}, "t"});
+    sink_.emit({Op::mint, 0, 0, false, {}, "sign bit"});
+    sink_.emit({Op::xor_, 0, 0, false, {}, "negate"});
+    sink_.emit({Op::stl, result + (real64_ ? 1 : 0), 0, false, {Region::workspace, -1}, "t :="});
+  }
+  return result;
+}
+
+// result := a op b (b < 0: a unary operation); a comparison leaves its result in A (result < 0).
+void ExpressionEmitter::soft_call(NodeKind kind, int a, int b, int result) {
+  const int va = soft_value(a);
+  const int vb = b >= 0 ? soft_value(b) : -1;
+  const CodeUnit& routine = library_routine(kind, real64_, sink_.target());
+  if (real64_ && result >= 0) {
+    sink_.emit({Op::ldlp, result, 0, false, {}, "result's address"});
+    sink_.emit({Op::stl, 0, 0, false, {Region::workspace, -1}, "parameter"});
+  }
+  if (b >= 0) soft_push(b, vb);
+  static const std::map<NodeKind, int> kOperation = {
+      {NodeKind::add, 0}, {NodeKind::sub, 1}, {NodeKind::mul, 2}, {NodeKind::div, 3}};
+  const auto code = kOperation.find(kind);
+  if (code != kOperation.end()) sink_.emit({Op::ldc, code->second, 0, false, {}, "operation"});
+  soft_push(a, va);
+  sink_.emit({Op::call, kLibraryDistance, 0, false, {Region::workspace, -1}, routine.name});
+  sink_.call(routine);
+  if (!real64_ && result >= 0)
+    sink_.emit({Op::stl, result, 0, false, {Region::workspace, -1}, "t :="});
+  if (va >= 0) frame_.release_temporary(va, words_);
+  if (vb >= 0) frame_.release_temporary(vb, words_);
+}
+
+// x[i] := value: the value's word(s) copied into the element.
+void ExpressionEmitter::soft_store(int n, int access) {
+  const int v = soft_value(n);
+  const int core = through(n);
+  int value = v;
+  if (sign(n) && v < 0) {  // a negated memory operand: its sign flipped on the way
+    value = frame_.allocate_temporary(words_);
+    soft_push(core, -1);
+    sink_.emit({Op::mint, 0, 0, false, {}, "sign bit"});
+    sink_.emit({Op::xor_, 0, 0, false, {}, "negate"});
+    sink_.emit({Op::stl, value, 0, false, {Region::workspace, -1}, "t :="});
+  }
+  const int words = real64_ ? 2 : 1;
+  MemoryRef where{Region::array, r_.accesses()[std::size_t(access)].array};
+  for (int w = 0; w < words; ++w) {
+    if (value >= 0) {
+      sink_.emit({Op::ldl, value + w, 0, false, {Region::workspace, -1}, "value"});
+    } else {
+      soft_push(core, -1);
+      if (real64_) sink_.emit({Op::ldnl, w, 0, false, leaf_memory(r_, r_.nodes()[std::size_t(core)], temporary(core)), "word"});
+    }
+    sink_.address(access);
+    sink_.emit({Op::stnl, w, 0, false, where, sink_.element(access) + " :="});
+  }
+  if (value >= 0) frame_.release_temporary(value, words_);
 }
 
 }  // namespace t800::codegen

@@ -49,6 +49,7 @@ class ExpressionEmitter {
   struct Plan;  // how a binary operation is evaluated
   bool temporary(int n) const { return temporary_[std::size_t(n)]; }
   bool memory_operand(int n) const;
+  int through(int n) const;  // n without the sign changes around it
   int need(int n);
   int need_expanded(int n);
   bool sign(int n);
@@ -64,6 +65,12 @@ class ExpressionEmitter {
   void operation(isa::Op op, const std::string& note);
   void store_fp(isa::MemoryRef where, const std::string& note);
   void release_after(int event);
+  // Without an FPU (generator.hpp: Target::fpu).
+  void soft_push(int n, int slot);
+  int soft_value(int n);
+  int soft_compute(int n);
+  void soft_call(NodeKind kind, int a, int b, int result);
+  void soft_store(int n, int access);
   void analyse();
   std::string describe(int n) const;
 
@@ -71,6 +78,7 @@ class ExpressionEmitter {
   EmitSink& sink_;
   Frame& frame_;
   bool real64_;
+  int words_;  // of a REAL
   std::vector<bool> live_, temporary_;
   std::vector<int> uses_, last_use_;
   std::vector<int> slot_;               // a temporary's workspace word, while it lives

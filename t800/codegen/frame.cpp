@@ -19,16 +19,24 @@ Frame::Frame(const Recording& recording) {
   fixed_ = next;
 }
 
-int Frame::allocate_temporary() {
-  auto free = std::find(temporary_used_.begin(), temporary_used_.end(), false);
-  if (free == temporary_used_.end()) free = temporary_used_.insert(free, false);
-  *free = true;
-  return fixed_ + int(free - temporary_used_.begin());
+int Frame::allocate_temporary(int words) {
+  std::size_t slot = 0;
+  for (;; ++slot) {  // the first run of `words` free words
+    bool free = true;
+    for (int w = 0; w < words && free; ++w)
+      free = slot + std::size_t(w) >= temporary_used_.size() || !temporary_used_[slot + std::size_t(w)];
+    if (free) break;
+  }
+  if (temporary_used_.size() < slot + std::size_t(words)) temporary_used_.resize(slot + std::size_t(words), false);
+  for (int w = 0; w < words; ++w) temporary_used_[slot + std::size_t(w)] = true;
+  return fixed_ + int(slot);
 }
 
-void Frame::release_temporary(int offset) {
-  const int slot = offset - fixed_;
-  if (slot >= 0 && slot < int(temporary_used_.size())) temporary_used_[std::size_t(slot)] = false;
+void Frame::release_temporary(int offset, int words) {
+  for (int w = 0; w < words; ++w) {
+    const int slot = offset - fixed_ + w;
+    if (slot >= 0 && slot < int(temporary_used_.size())) temporary_used_[std::size_t(slot)] = false;
+  }
 }
 
 }  // namespace t800::codegen

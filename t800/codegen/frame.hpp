@@ -21,8 +21,9 @@ class Frame {
   int constant_table() const { return 2 * loop_depth_ + 1; }  // pointer to the REAL constants
   int array_base(int array) const { return array_base_[std::size_t(array)]; }
 
-  int allocate_temporary();
-  void release_temporary(int offset);
+  // A temporary of `words` consecutive words (2 for a REAL64).
+  int allocate_temporary(int words = 1);
+  void release_temporary(int offset, int words = 1);
 
   // The frame's size in words, the call linkage (Iptr and the three saved registers) included.
   int words() const { return fixed_ + int(temporary_used_.size()) + kLinkage; }

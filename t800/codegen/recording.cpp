@@ -1,5 +1,6 @@
 #include "t800/codegen/recording.hpp"
 
+#include <atomic>
 #include <stdexcept>
 
 namespace t800::codegen {
@@ -8,6 +9,10 @@ namespace {
 Recording*& active() {
   thread_local Recording* recording = nullptr;
   return recording;
+}
+std::uint32_t next_serial() {
+  static std::atomic<std::uint32_t> serial{0};
+  return ++serial;
 }
 }  // namespace
 
@@ -19,17 +24,13 @@ bool is_routine(NodeKind kind) {
 }
 
 Recording::Recording(std::string name, bool real64)
-    : name_(std::move(name)), real64_(real64), outer_(active()) {
-  active() = this;
-}
+    : name_(std::move(name)), real64_(real64), serial_(next_serial()) {}
 
-Recording::~Recording() {
-  active() = outer_;
-}
+Recording* Recording::current() { return active(); }
 
-Recording* Recording::current() {
-  return active();
-}
+RecordingScope::RecordingScope(Recording& recording) : outer_(active()) { active() = &recording; }
+
+RecordingScope::~RecordingScope() { active() = outer_; }
 
 int Recording::declare_array(std::string name, std::int64_t length, ArrayStorage storage) {
   arrays_.push_back({std::move(name), length, storage});

@@ -89,19 +89,19 @@ struct Event {
   int block = 0;  // the block it happened in
 };
 
+// A recorded kernel: plain data, kept and compiled for each processor type that runs it.
 class Recording {
  public:
-  // Starts recording on this thread (recordings nest: an inner one hides the outer until it ends).
   Recording(std::string name, bool real64);
-  ~Recording();
-  Recording(const Recording&) = delete;
-  Recording& operator=(const Recording&) = delete;
 
-  // The recording receiving operations on this thread, or nullptr.
+  // The recording receiving operations on this thread (RecordingScope), or nullptr.
   static Recording* current();
 
   const std::string& name() const { return name_; }
   bool real64() const { return real64_; }
+  // Unique among the recordings of this run: a value carries it with its node, so that a value
+  // from another recording is not mistaken for one of this one's.
+  std::uint32_t serial() const { return serial_; }
 
   // ---- Declarations (by kernels and their callers) ----
   int declare_array(std::string name, std::int64_t length,
@@ -133,13 +133,26 @@ class Recording {
   int block() const;
   std::string name_;
   bool real64_;
-  Recording* outer_;
+  std::uint32_t serial_;
   std::vector<Node> nodes_;
   std::vector<Event> events_;
   std::vector<Access> accesses_;
   std::vector<ArrayDecl> arrays_;
   std::vector<int> open_blocks_{0};  // the block being recorded, innermost last
   int next_block_ = 1;
+};
+
+// Makes a recording the one receiving operations on this thread while it is alive (scopes nest:
+// an inner one hides the outer until it ends).
+class RecordingScope {
+ public:
+  explicit RecordingScope(Recording& recording);
+  ~RecordingScope();
+  RecordingScope(const RecordingScope&) = delete;
+  RecordingScope& operator=(const RecordingScope&) = delete;
+
+ private:
+  Recording* outer_;
 };
 
 }  // namespace t800::codegen

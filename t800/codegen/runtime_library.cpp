@@ -209,13 +209,9 @@ CodeUnit software_arithmetic(NodeKind kind, bool real64) {
     if (real64) {
       c.ldl(frame + 1 + 2 * operand, "operand (address)")
           .with(Op::ldnl, 1, "high word", kWorkspace);
-      c.op(Op::dup)
-          .with(Op::ldc, 20)
-          .op(Op::shr, "exponent", {}, 20)
-          .with(Op::ldc, 0x7FF)
-          .op(Op::and_)
-          .stl(at);
-      c.with(Op::ldc, 0xFFFFF).op(Op::and_, "fraction high").stl(at + 1);
+      c.stl(at + 1).ldl(at + 1).with(Op::ldc, 20).op(Op::shr, "exponent", {}, 20);
+      c.with(Op::ldc, 0x7FF).op(Op::and_).stl(at);
+      c.ldl(at + 1).with(Op::ldc, 0xFFFFF).op(Op::and_, "fraction high").stl(at + 1);
       c.ldl(frame + 1 + 2 * operand).with(Op::ldnl, 0, "low word", kWorkspace).stl(at + 2);
       c.ldl(at + 1).ldl(at + 2).with(Op::ldc, 11).op(Op::lshl, "normalise fraction", {}, 11);
       c.stl(at + 1).stl(at + 2);
@@ -314,18 +310,23 @@ CodeUnit software_other(NodeKind kind, bool real64) {
       c.stl(0);
       const CodeUnit& div = library_routine(NodeKind::div, real64, Target{false, true});
       const CodeUnit& add = library_routine(NodeKind::add, real64, Target{false, true});
+      // One Newton step's own code runs `steps` times, each calling the division and the
+      // addition, whose code is theirs (only their execution is SQRT's).
+      Code step(false);
+      for (const CodeUnit* u : {&div, &add})
+        step.ldl(0).with(Op::ldc, 0).ldl(frame + 1).with(Op::call, 1024, u->name, kWorkspace).stl(0);
+      step.ldl(0).with(Op::ldc, 1).op(Op::shr, "/ 2", {}, 1).stl(0);  // exponent - 1
+      c.with(Op::ajw, frame, "leave").op(Op::ret);
+      CodeUnit u = unit(name, real64, c.take(), 0, frame + 4 + div.workspace_words);
+      const isa::Sequence step_code = step.take();
+      for (const Instruction& in : step_code) u.code_bytes += in.bytes();
       const int steps = real64 ? 5 : 3;
-      for (int s = 0; s < steps; ++s) {
-        for (const CodeUnit* u : {&div, &add}) {
-          c.ldl(0).with(Op::ldc, 0).ldl(frame + 1).with(Op::call, 1024, u->name, kWorkspace);
-          for (const CodeRun& run : u->runs)
-            for (const Instruction& in : run.code)
-              c.with(in.op, in.operand, in.note, in.data, in.param);
-          c.stl(0);
-        }
-        c.ldl(0).with(Op::ldc, 1).op(Op::shr, "/ 2", {}, 1).stl(0);  // exponent - 1
-      }
-      break;
+      u.runs.push_back({name + " Newton step", step_code, steps, true});
+      for (const CodeUnit* r : {&div, &add})
+        for (const CodeRun& run : r->runs)
+          u.runs.push_back({run.label, run.code, run.times * steps, true});
+      u.routines = {&div, &add};
+      return u;
     }
   }
   c.with(Op::ajw, frame, "leave").op(Op::ret);

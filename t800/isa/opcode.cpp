@@ -205,4 +205,41 @@ int encoded_bytes(Op op, std::int64_t operand) {
   throw std::logic_error("encoded_bytes: unknown encoding");
 }
 
+namespace {
+constexpr std::uint8_t kPfix = 0x2, kNfix = 0x6;
+
+// The compiler writer's guide's prefixing: an operand below 16 fits the instruction byte; larger
+// ones are built by pfix bytes, negative ones start with nfix.
+void prefixed(std::uint8_t function, std::int64_t operand, std::vector<std::uint8_t>& out) {
+  if (operand >= 0 && operand < 16) {
+    out.push_back(std::uint8_t(function << 4 | operand));
+  } else if (operand >= 16) {
+    prefixed(kPfix, operand >> 4, out);
+    out.push_back(std::uint8_t(function << 4 | (operand & 0xF)));
+  } else {
+    prefixed(kNfix, (~operand) >> 4, out);
+    out.push_back(std::uint8_t(function << 4 | (operand & 0xF)));
+  }
+}
+}  // namespace
+
+std::vector<std::uint8_t> encode(Op op, std::int64_t operand) {
+  const OpInfo& i = info(op);
+  std::vector<std::uint8_t> out;
+  constexpr std::uint8_t kOpr = 0xF, kLdc = 0x4;
+  switch (i.encoding) {
+    case Encoding::direct:
+      prefixed(std::uint8_t(i.code), operand, out);
+      break;
+    case Encoding::operate:
+      prefixed(kOpr, i.code, out);
+      break;
+    case Encoding::fpu_entry:
+      prefixed(kLdc, i.code, out);
+      prefixed(kOpr, info(Op::fpentry).code, out);
+      break;
+  }
+  return out;
+}
+
 }  // namespace t800::isa

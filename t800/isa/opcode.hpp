@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace t800::isa {
 
@@ -191,5 +192,8 @@ int prefix_bytes(std::int64_t operand);
 // Bytes of an instruction in memory, prefixes included. For direct functions `operand` is the
 // operand; operations and fpu-entry operations take none (their code is fixed).
 int encoded_bytes(Op op, std::int64_t operand = 0);
+// The bytes themselves (pfix/nfix chain, then the instruction byte; an fpu-entry operation is
+// ldc code, fpentry).
+std::vector<std::uint8_t> encode(Op op, std::int64_t operand = 0);
 
 }  // namespace t800::isa

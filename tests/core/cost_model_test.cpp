@@ -74,10 +74,10 @@ TEST(CostModel, CommunicationInstructionCycles) {
   EXPECT_EQ(CostModel::communication_cycles(4000, false), 19);        // on a link only the set-up
 }
 
-TEST(CostModel, SpeedGrades) {
+TEST(CostModel, ProcessorTypes) {
   t800::ProcessorConfig p;
-  p.grade = t800::SpeedGrade::T800_25;
+  p.type = t800::ProcessorType::T800_25;
   EXPECT_DOUBLE_EQ(CostModel(p, Precision::real32).cycle_ns(), 40.0);
-  EXPECT_EQ(t800::parse_speed_grade("T800-30"), t800::SpeedGrade::T800_30);
-  EXPECT_FALSE(t800::parse_speed_grade("T801-20").has_value());
+  EXPECT_EQ(t800::parse_processor_type("T800-30"), t800::ProcessorType::T800_30);
+  EXPECT_FALSE(t800::parse_processor_type("T801-20").has_value());
 }

@@ -40,11 +40,11 @@ TEST_P(RoutedMessage, FollowsStoreAndForwardFormula) {
   // Sender set-up, then per hop the link time and (except at the end) the router's output set-up, then the
   // last router's copy into the reader's buffer, and the router re-arming its input (19c) before the
   // low-priority reader gets the CPU: T(h) = 19c + h L(B) + (h-1) 19c + (2w+19)c + 19c.
-  using namespace t800::timing;
+  constexpr double kInOut = 19, kPerWord = 2;  // in / out = 2w + 19 cycles (the datasheet's table)
   const std::int64_t B = payload + network::kRouteHeaderBytes;
-  const double copy = kCommPerWord * ((payload + 3) / 4) + kCommFixed;
+  const double copy = kPerWord * ((payload + 3) / 4) + kInOut;
   const double expected_ns =
-      kCommFixed * kCycleNs * hops + hops * link_time_ns(B) + (copy + kCommFixed) * kCycleNs;
+      kInOut * kCycleNs * hops + hops * link_time_ns(B) + (copy + kInOut) * kCycleNs;
   EXPECT_NEAR(arrival_us * 1000.0, expected_ns, 1.0);
 }
 
@@ -62,7 +62,7 @@ TEST(DirectChannel, NeighboursUseTheLinkDirectly) {
   });
   ASSERT_TRUE(m.run().empty());
   EXPECT_EQ(c.kind, network::Channel::Kind::direct);
-  EXPECT_NEAR(arrival_us * 1000.0, t800::timing::kCommFixed * kCycleNs + link_time_ns(96), 1.0);
+  EXPECT_NEAR(arrival_us * 1000.0, t800::timing::communication_setup_cycles() * kCycleNs + link_time_ns(96), 1.0);
 }
 
 // The payload a workload sends is the payload it receives, also through routers.

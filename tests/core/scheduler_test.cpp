@@ -83,12 +83,12 @@ TEST(Preemption, HighPriorityPreemptsWithinTheLatency) {
   ASSERT_GT(handler_start, 0);
   // The 4-byte message arrives at: sender's 1 ms + out set-up, then 3 byte periods + one data
   // packet.
-  arrived_us = 1000.0 + t800::timing::kCommFixed * kCycleUs + (3 * 0.575 + 0.55);
+  arrived_us = 1000.0 + t800::timing::communication_setup_cycles() * kCycleUs + (3 * 0.575 + 0.55);
   EXPECT_GE(handler_start - arrived_us, t800::timing::kInterruptLatencyTypical * kCycleUs - 1e-6);
   EXPECT_LE(handler_start - arrived_us, t800::timing::kInterruptLatencyMax * kCycleUs + 1e-6);
   // The background process loses exactly the CPU time the handler used, and the memory cycles the
   // input DMA took while it computed (one per byte of the 4-byte message).
-  const double handler_cpu = (high_cycles + t800::timing::kCommFixed) * kCycleUs;
+  const double handler_cpu = (high_cycles + t800::timing::communication_setup_cycles()) * kCycleUs;
   const double dma_cycles = 4 * t800::timing::kLinkDmaCyclesPerByte * kCycleUs;
   EXPECT_NEAR(low_end_us, low_cycles * kCycleUs + handler_cpu + dma_cycles, 1e-6);
   EXPECT_EQ(m.transputer(0).cpu().statistics().stolen_cycles,

@@ -215,9 +215,9 @@ TEST(Families, HypercubePathLengthsAreHamming) {
 
 TEST(Families, ProcessorConfigIsApplied) {
   t800::ProcessorConfig config;
-  config.grade = t800::SpeedGrade::T800_30;
+  config.type = t800::ProcessorType::T800_30;
   const Topology t = generate(Family::ring, 4, config, kWhere);
-  for (const auto& p : t.processors) EXPECT_EQ(p.config.grade, t800::SpeedGrade::T800_30);
+  for (const auto& p : t.processors) EXPECT_EQ(p.config.type, t800::ProcessorType::T800_30);
 }
 
 TEST(Families, TooFewWorkers) {

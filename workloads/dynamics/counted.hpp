@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 
 #include "t800/codegen/recording.hpp"
@@ -57,17 +58,19 @@ class Counted {
   // explicitly by the kernels, see op_counts.hpp; a recording makes them constants of the code).
   Counted(T v) : v_(v) {}  // NOLINT(google-explicit-constructor)
   // A copy is a value: reading a declared array element, it is a load of that element.
-  Counted(const Counted& o) : v_(o.v_), node_(o.value_node()) {}
+  Counted(const Counted& o) : v_(o.v_), node_(o.value_node()), serial_(o.serial_) {}
   // Assigning to a declared array element is a store into it (recorded); otherwise a copy.
   Counted& operator=(const Counted& o) {
     const int node = o.value_node();
     v_ = o.v_;
     Recording* r = Recording::current();
-    if (home_ >= 0 && r) {
+    if (r && home_ >= 0 && serial_ == r->serial()) {
       r->store(home_, node >= 0 ? node : r->constant(double(v_)));
       node_ = -1;  // read again, it is loaded from the element
     } else {
       node_ = node;
+      home_ = -1;
+      serial_ = o.serial_;
     }
     return *this;
   }
@@ -78,6 +81,7 @@ class Counted {
   void bind(int access) {
     home_ = access;
     node_ = -1;
+    serial_ = Recording::current() ? Recording::current()->serial() : 0;
   }
 
   friend Counted operator+(Counted a, Counted b) {
@@ -136,20 +140,22 @@ class Counted {
 
  private:
   // The node holding this value in the active recording: its own, a load of its array element, or
-  // -1 (a literal or a value from before the recording: a constant).
+  // -1 (a literal, or a value from outside the recording: a constant of the code).
   int value_node() const {
-    if (node_ >= 0) return node_;
     Recording* r = Recording::current();
-    return (home_ >= 0 && r) ? r->load(home_) : -1;
+    if (!r || serial_ != r->serial()) return -1;
+    if (node_ >= 0) return node_;
+    return home_ >= 0 ? r->load(home_) : -1;
   }
   static int operand(Recording& r, const Counted& x) {
-    return x.node_ >= 0 ? x.node_ : r.constant(double(x.v_));
+    return (x.node_ >= 0 && x.serial_ == r.serial()) ? x.node_ : r.constant(double(x.v_));
   }
   static Counted record(T result, NodeKind kind, const Counted& a, const Counted& b) {
     Counted c(result);
     if (Recording* r = Recording::current()) {
       const bool unary = &a == &b;
       c.node_ = r->operation(kind, operand(*r, a), unary ? -1 : operand(*r, b));
+      c.serial_ = r->serial();
     }
     return c;
   }
@@ -167,8 +173,9 @@ class Counted {
   }
 
   T v_ = 0;
-  int node_ = -1;  // the recorded node holding the value
-  int home_ = -1;  // a declared array element (recorded access)
+  int node_ = -1;           // the recorded node holding the value
+  int home_ = -1;           // a declared array element (recorded access)
+  std::uint32_t serial_ = 0;  // the recording node_ and home_ belong to
 };
 
 template <class T>

@@ -32,17 +32,25 @@ std::vector<dynamics::Subtask> FarmProgram<S>::subtasks() const {
 }
 
 template <class S>
-void FarmProgram<S>::build(network::Machine& m) {
-  work_ = farm_work(model_, settings_.variant, m.cost_model(master_));
+void FarmProgram<S>::build(network::Machine& m, const std::string& master_process) {
+  work_ = farm_work(model_, settings_.variant, m.compute_model(workers_.front()), sizeof(S) == 8);
   if (settings_.schedule != "on-demand") allocation_ = allocate(m);
   for (int w : workers_) {
     to_.push_back(&m.channel("to " + m.node_name(w), master_, w));
     from_.push_back(&m.channel("from " + m.node_name(w), w, master_));
     queue_.push_back(&m.channel("queue " + m.node_name(w), w, w));
   }
-  for (std::size_t w = 0; w < workers_.size(); ++w)
-    if (has_work(w))
-      m.spawn(workers_[w], "worker", t800::Priority::low, [this, w](network::Process& p) { worker(p, w); });
+  for (std::size_t w = 0; w < workers_.size(); ++w) {
+    if (!has_work(w)) continue;
+    m.spawn(workers_[w], "worker", t800::Priority::low, [this, w](network::Process& p) { worker(p, w); });
+    // The worker's code: its subtasks' PROCs (on demand it may get any of them).
+    if (settings_.schedule == "on-demand")
+      for (const FarmTask& t : work_.tasks) m.declare_code(workers_[w], "worker", t.work.code);
+    else
+      for (int t : allocation_[w]) m.declare_code(workers_[w], "worker", work_.tasks[std::size_t(t)].work.code);
+  }
+  m.declare_code(master_, master_process, work_.master_input.code);
+  m.declare_code(master_, master_process, work_.master_assembly.code);
 }
 
 // The list scheduler's view of each worker: its distance from the master in hops sets when its input
@@ -54,9 +62,9 @@ Allocation FarmProgram<S>::allocate(const network::Machine& m) const {
   for (int w : workers_) worker_names.push_back(m.node_name(w));
   if (settings_.schedule == "explicit") return parse_allocation(settings_.allocation, task_names, worker_names);
 
-  const double cycle_ns = m.cost_model(master_).cycle_ns();
+  const double cycle_ns = m.compute_model(master_).cycle_ns();
   const t800::LinkTiming link(m.options().link);
-  const double hop_overhead = t800::timing::kCommFixed * cycle_ns;
+  const double hop_overhead = t800::timing::communication_setup_cycles() * cycle_ns;
   const std::int64_t input_bytes = dynamics::worker_input_reals(model_) * kReal;
   std::vector<double> task_ns;
   for (const FarmTask& t : work_.tasks) task_ns.push_back(double(t.cycles) * cycle_ns);
@@ -209,7 +217,7 @@ void FarmProgram<S>::on_demand_round(network::Process& p, std::size_t w, const d
 template <class S>
 S FarmProgram<S>::run_task(network::Process& p, int t, const dynamics::WorkerInput<S>& input) {
   const FarmTask& task = work_.tasks[t];
-  p.compute(task.mix, task.subtask.name);  // the cost counted at build time, not by evaluating
+  p.compute(task.work, task.subtask.name);  // the cost known at build time, not by evaluating
   if (settings_.skip_numerics) return S(0);
   return dynamics::evaluate_subtask<S>(model_, task.subtask, input);
 }

@@ -117,6 +117,18 @@ template <class S, std::size_t N>
 void declare(std::array<S, N>& values, const char* name, bool in_workspace = false) {
   declare(values.data(), N, name, in_workspace);
 }
+// Scattered values (the fields of a message struct) as one array, in the order given.
+template <class S>
+void declare_each(const std::vector<S*>& elements, const char* name) {
+  if constexpr (dynamics::is_counted_v<S>) {
+    auto* r = t800::codegen::Recording::current();
+    if (!r) return;
+    const int array = r->declare_array(name, std::int64_t(elements.size()));
+    for (std::size_t i = 0; i < elements.size(); ++i)
+      elements[i]->bind(r->access(array, std::int64_t(i)));
+  }
+}
+
 // A scalar variable of the PROC's workspace.
 template <class S>
 void declare_variable(S& variable, const char* name) {

@@ -35,9 +35,20 @@ struct RunSetting {
   std::vector<std::string> processor_types;  // distinct, in processor order
 };
 
+// What lives where in a processor's memory (t800/memory_map.hpp).
+struct FootprintReport {
+  int on_chip_bytes = 0;
+  int reserved_bytes = 0, workspace_bytes = 0, data_bytes = 0, code_bytes = 0, library_bytes = 0;
+  int external_bytes = 0;               // of those, in external memory
+  std::vector<std::string> off_chip;    // the regions placed in external memory
+  int external_access_cycles = 0;       // an external access, wait states included
+};
+
 struct ProcessorReport {
   std::string name;
+  std::string type;  // "T800-20"
   double busy_us = 0, compute_us = 0, communicate_us = 0, idle_us = 0, utilisation = 0;
+  FootprintReport memory;
 };
 
 struct LinkReport {
@@ -63,8 +74,8 @@ struct RunReport {
   double wall_s = 0;
   RunSetting setting;
   network::Fidelity fidelity;  // what the run modelled and skipped
-  std::uint64_t events =
-      0;  // SystemC delta cycles: one per batch of process activations at one time
+  bool run_time_checks = true;  // compiled into the generated code
+  std::uint64_t events = 0;  // SystemC delta cycles: one per batch of process activations at one time
   std::vector<ProcessorReport> processors;
   std::vector<LinkReport> links;
   std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
@@ -77,5 +88,10 @@ struct RunReport {
 
 // Runs one simulation. Only one per OS process (SystemC cannot be restarted).
 RunReport run(const RunInputs& inputs);
+
+class Workload;
+// What run() does before running: the workload of `inputs` built on `machine` (its processes placed,
+// its code declared). Kept alive while the machine is used.
+std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& inputs);
 
 }  // namespace workloads
