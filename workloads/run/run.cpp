@@ -87,7 +87,7 @@ RunSetting setting_of(const RunInputs& in) {
   if (const auto family = network::family_of(in.topology))
     s.network_family = std::string(network::to_string(*family));
   for (const network::ProcessorSpec& p : in.topology.processors) {
-    const std::string type(t800::to_string(p.config.grade));
+    const std::string type(t800::to_string(p.config.type));
     if (std::find(s.processor_types.begin(), s.processor_types.end(), type) ==
         s.processor_types.end())
       s.processor_types.push_back(type);
