@@ -19,10 +19,10 @@ void ComputeModel::set_memory(MemoryMap map) {
   resolved.memory.data = memory_.data_external() || memory_.workspace_external()
                              ? Placement::external
                              : Placement::on_chip;
-  resolved.memory.code = memory_.external_bytes(MemoryRegion::Kind::code) * 2 >
-                                 memory_.bytes(MemoryRegion::Kind::code)
-                             ? Placement::external
-                             : Placement::on_chip;
+  resolved.memory.code =
+      memory_.external_bytes(MemoryRegion::Kind::code) * 2 > memory_.bytes(MemoryRegion::Kind::code)
+          ? Placement::external
+          : Placement::on_chip;
   mix_ = CostModel(resolved, settings_.precision, settings_.code_efficiency);
 }
 
@@ -57,8 +57,8 @@ std::int64_t ComputeModel::cycles(const ComputeWork& work) const {
   if (settings_.cost == ComputeCost::mix || !work.code) return mix_.cycles(work.mix);
   Compiled& c = compiled(work.code);
   if (c.cycles < 0)
-    c.cycles = std::int64_t(
-        std::ceil(double(time(c.unit).cycles) * settings_.code_efficiency - 1e-9));
+    c.cycles =
+        std::int64_t(std::ceil(double(time(c.unit).cycles) * settings_.code_efficiency - 1e-9));
   return c.cycles;
 }
 

@@ -22,9 +22,15 @@ std::string_view to_string(Precision precision) {
 }
 
 namespace timing {
-int communication_setup_cycles() { return t800_timing()[isa::Op::in].cycles; }
-int start_process_cycles() { return t800_timing()[isa::Op::startp].cycles; }
-int end_process_cycles() { return t800_timing()[isa::Op::endp].cycles; }
+int communication_setup_cycles() {
+  return t800_timing()[isa::Op::in].cycles;
+}
+int start_process_cycles() {
+  return t800_timing()[isa::Op::startp].cycles;
+}
+int end_process_cycles() {
+  return t800_timing()[isa::Op::endp].cycles;
+}
 
 OperationMix sincos_routine(bool real64) {
   const int terms = real64 ? kSinCosTermsReal64 : kSinCosTermsReal32;
@@ -34,9 +40,9 @@ OperationMix sincos_routine(bool real64) {
   m.fp_add = 2 + terms;      // two-part subtraction, Horner adds
   m.fp_loads = 1 + terms;    // the argument and one coefficient per term (constants live in memory)
   m.fp_stores = 1;
-  m.fp_compare = 1;          // sign of the reduced argument
-  m.int_simple = 4 + 4;      // fpint / conversion to integer and quadrant arithmetic
-  m.branches = 2;            // quadrant selection
+  m.fp_compare = 1;      // sign of the reduced argument
+  m.int_simple = 4 + 4;  // fpint / conversion to integer and quadrant arithmetic
+  m.branches = 2;        // quadrant selection
   return m;
 }
 }  // namespace timing
@@ -44,10 +50,13 @@ OperationMix sincos_routine(bool real64) {
 CostModel::CostModel(const ProcessorConfig& processor, Precision precision, double code_efficiency)
     : processor_(processor), precision_(precision), code_efficiency_(code_efficiency) {}
 
-double CostModel::cycle_ns() const { return t800::cycle_ns(processor_.type); }
+double CostModel::cycle_ns() const {
+  return t800::cycle_ns(processor_.type);
+}
 
 double CostModel::memory_extra_per_access() const {
-  return external_access_cycles(processor_model(processor_.type), processor_.memory.wait_states) - 1;
+  return external_access_cycles(processor_model(processor_.type), processor_.memory.wait_states) -
+         1;
 }
 
 namespace {
@@ -127,29 +136,32 @@ CycleBreakdown CostModel::breakdown(const OperationMix& in) const {
   mix.sincos = 0;
   if (in.sincos > 0) mix += timing::sincos_routine(r64) * in.sincos;
 
-  const double arithmetic = double(mix.fp_add + mix.fp_mul + mix.fp_div + mix.fp_sqrt + mix.fp_compare);
+  const double arithmetic =
+      double(mix.fp_add + mix.fp_mul + mix.fp_div + mix.fp_sqrt + mix.fp_compare);
   const double issue = arithmetic * f.fp_issue;
-  double iu = mix.int_simple * f.simple + mix.word_loads * f.word_load + mix.word_stores * f.word_store +
-              mix.int_mul * f.int_mul + mix.int_div * f.int_div + mix.branches * f.branch +
-              mix.loop_ends * f.loop_end + mix.calls * f.call_return + mix.prefixes * f.prefix +
-              mix.fp_loads * f.fp_load + mix.fp_stores * f.fp_store + issue;
+  double iu = mix.int_simple * f.simple + mix.word_loads * f.word_load +
+              mix.word_stores * f.word_store + mix.int_mul * f.int_mul + mix.int_div * f.int_div +
+              mix.branches * f.branch + mix.loop_ends * f.loop_end + mix.calls * f.call_return +
+              mix.prefixes * f.prefix + mix.fp_loads * f.fp_load + mix.fp_stores * f.fp_store +
+              issue;
   const double arithmetic_cycles = mix.fp_add * f.fp_add + mix.fp_mul * f.fp_mul +
                                    mix.fp_div * f.fp_div + mix.fp_sqrt * f.fp_sqrt +
                                    mix.fp_compare * f.fp_compare;
   const double fpu = f.fpu ? arithmetic_cycles : 0.0;
   if (!f.fpu) iu += arithmetic_cycles;
 
-  // External memory: every data access pays the slower cycle; REAL64 moves two words. Code fetched from
-  // external memory pays once per word of code, about four one-byte instructions (U).
+  // External memory: every data access pays the slower cycle; REAL64 moves two words. Code fetched
+  // from external memory pays once per word of code, about four one-byte instructions (U).
   const MemoryConfig& mem = processor_.memory;
   if (mem.data == Placement::external) {
-    const double words = mix.word_loads + mix.word_stores + (mix.fp_loads + mix.fp_stores) * (r64 ? 2 : 1);
+    const double words =
+        mix.word_loads + mix.word_stores + (mix.fp_loads + mix.fp_stores) * (r64 ? 2 : 1);
     iu += words * memory_extra_per_access();
   }
   if (mem.code == Placement::external) {
     const double instructions = mix.int_simple + mix.word_loads + mix.word_stores + mix.int_mul +
-                                mix.int_div + mix.branches + mix.loop_ends + 2 * mix.calls + mix.prefixes +
-                                mix.fp_loads + mix.fp_stores + 2 * arithmetic;
+                                mix.int_div + mix.branches + mix.loop_ends + 2 * mix.calls +
+                                mix.prefixes + mix.fp_loads + mix.fp_stores + 2 * arithmetic;
     iu += instructions / 4.0 * memory_extra_per_access();
   }
 

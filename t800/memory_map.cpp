@@ -8,11 +8,16 @@ namespace t800 {
 
 const char* to_string(MemoryRegion::Kind kind) {
   switch (kind) {
-    case MemoryRegion::Kind::reserved: return "reserved";
-    case MemoryRegion::Kind::workspace: return "workspace";
-    case MemoryRegion::Kind::data: return "data";
-    case MemoryRegion::Kind::code: return "code";
-    case MemoryRegion::Kind::library: return "library";
+    case MemoryRegion::Kind::reserved:
+      return "reserved";
+    case MemoryRegion::Kind::workspace:
+      return "workspace";
+    case MemoryRegion::Kind::data:
+      return "data";
+    case MemoryRegion::Kind::code:
+      return "code";
+    case MemoryRegion::Kind::library:
+      return "library";
   }
   return "?";
 }
@@ -34,7 +39,9 @@ int external_access_cycles(const ProcessorModel& processor, int wait_states) {
 
 namespace {
 
-std::string kilobytes(int bytes) { return fmt::format("{} bytes", bytes); }
+std::string kilobytes(int bytes) {
+  return fmt::format("{} bytes", bytes);
+}
 
 }  // namespace
 

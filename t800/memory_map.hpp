@@ -1,6 +1,6 @@
 // What lives where in one processor's memory: its footprint (the code of the processes placed on
-// it, their workspaces and arrays, the reserved low memory) laid out from the bottom of on-chip RAM,
-// and which parts therefore sit in external memory (docs/t800-timing.md, "Memory placement").
+// it, their workspaces and arrays, the reserved low memory) laid out from the bottom of on-chip
+// RAM, and which parts therefore sit in external memory (docs/t800-timing.md, "Memory placement").
 //
 // The layout follows the INMOS occam toolset's memory maps: the words below MemStart are the
 // processor's own, the loaded program's run-time system takes the next ones (the application
@@ -46,11 +46,12 @@ const char* to_string(MemoryRegion::Kind kind);
 class MemoryMap {
  public:
   MemoryMap() = default;  // everything on chip, nothing declared
-  MemoryMap(const ProcessorModel& processor, const MemoryConfig& config, const MemoryDemand& demand);
+  MemoryMap(const ProcessorModel& processor, const MemoryConfig& config,
+            const MemoryDemand& demand);
 
   const std::vector<MemoryRegion>& regions() const { return regions_; }
   int on_chip_bytes() const { return on_chip_bytes_; }
-  int bytes(MemoryRegion::Kind kind) const;       // declared bytes of a kind
+  int bytes(MemoryRegion::Kind kind) const;           // declared bytes of a kind
   int external_bytes(MemoryRegion::Kind kind) const;  // of those, in external memory
   int external_cycles() const { return external_cycles_; }
 

@@ -2,13 +2,18 @@
 
 namespace t800 {
 
-double cycle_ns(ProcessorType type) { return processor_model(type).cycle_ns; }
+double cycle_ns(ProcessorType type) {
+  return processor_model(type).cycle_ns;
+}
 
 std::string_view to_string(Placement placement) {
   switch (placement) {
-    case Placement::automatic: return "auto";
-    case Placement::on_chip: return "onchip";
-    case Placement::external: return "external";
+    case Placement::automatic:
+      return "auto";
+    case Placement::on_chip:
+      return "onchip";
+    case Placement::external:
+      return "external";
   }
   return "?";
 }
@@ -29,6 +34,8 @@ std::optional<LinkProtocol> parse_link_protocol(std::string_view text) {
   return std::nullopt;
 }
 
-bool is_valid_link_speed(double mbps) { return mbps == 5.0 || mbps == 10.0 || mbps == 20.0; }
+bool is_valid_link_speed(double mbps) {
+  return mbps == 5.0 || mbps == 10.0 || mbps == 20.0;
+}
 
 }  // namespace t800

@@ -1,5 +1,5 @@
-// The configurable facts of one transputer and its links: plain data, filled in by network/ from topology
-// files, read by the compute model and the SystemC modules.
+// The configurable facts of one transputer and its links: plain data, filled in by network/ from
+// topology files, read by the compute model and the SystemC modules.
 #pragma once
 
 #include <optional>

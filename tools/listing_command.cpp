@@ -28,9 +28,9 @@ struct ListingArgs {
 };
 
 std::string kernel_table(const network::Machine& machine) {
-  std::string out = fmt::format("{:<10} {:<10} {:<20} {:>7} {:>7} {:>6} {:>9} {:>10}  {}\n",
-                                "processor", "process", "kernel", "code_B", "const_B", "ws_w",
-                                "cycles", "us", "code in");
+  std::string out =
+      fmt::format("{:<10} {:<10} {:<20} {:>7} {:>7} {:>6} {:>9} {:>10}  {}\n", "processor",
+                  "process", "kernel", "code_B", "const_B", "ws_w", "cycles", "us", "code in");
   for (const network::Machine::DeclaredCode& d : machine.declared_code()) {
     const t800::ComputeModel& model = machine.compute_model(d.node);
     const t800::codegen::CodeUnit& unit = model.code(d.kernel);
@@ -54,8 +54,8 @@ int list(const ListingArgs& args) {
     throw std::invalid_argument("scene " + scene.name + ": its workload (" + scene.workload_kind +
                                 ") declares no recorded kernels, so there is no code to list");
   if (args.kernel.empty()) {
-    std::cout << kernel_table(machine)
-              << "\n(t800sim listing " << args.scene << " --kernel NAME prints one of them)\n";
+    std::cout << kernel_table(machine) << "\n(t800sim listing " << args.scene
+              << " --kernel NAME prints one of them)\n";
     return kExitOk;
   }
   std::vector<std::string> names;
@@ -69,8 +69,7 @@ int list(const ListingArgs& args) {
     return kExitOk;
   }
   throw std::invalid_argument(
-      "--kernel " + args.kernel +
-      (args.processor.empty() ? "" : " --processor " + args.processor) +
+      "--kernel " + args.kernel + (args.processor.empty() ? "" : " --processor " + args.processor) +
       ": no such kernel in scene " + scene.name + "; run without --kernel for the list");
 }
 
@@ -81,7 +80,8 @@ void add_listing_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "listing", "Print the T800 code a scene's processors run: every kernel, or one (--kernel)");
   cmd->add_option("scene", args->scene, "scene TOML file (configs/scenes/*.toml)")->required();
-  cmd->add_option("--set", args->overrides, "override a scene key, as for run")->type_name("KEY=VALUE");
+  cmd->add_option("--set", args->overrides, "override a scene key, as for run")
+      ->type_name("KEY=VALUE");
   cmd->add_option("--kernel", args->kernel, "print this kernel's listing (e.g. D11, LOOP7)");
   cmd->add_option("--processor", args->processor,
                   "the processor whose copy to print (default: the first that runs it)");

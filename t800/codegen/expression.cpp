@@ -144,8 +144,22 @@ void ExpressionEmitter::analyse() {
     if (temporary_[i] && last_use_[i] >= 0) release_at_.insert({last_use_[i], int(i)});
 }
 
+// The same value: one node, or two reads of one element in one place (a variable read twice).
+bool ExpressionEmitter::same_value(int a, int b) const {
+  a = through(a);
+  b = through(b);
+  if (a == b) return true;
+  const Node& x = r_.nodes()[std::size_t(a)];
+  const Node& y = r_.nodes()[std::size_t(b)];
+  if (x.kind != NodeKind::load || y.kind != NodeKind::load || x.block != y.block) return false;
+  const Access& p = r_.accesses()[std::size_t(x.access)];
+  const Access& q = r_.accesses()[std::size_t(y.access)];
+  return p.array == q.array && p.index == q.index;
+}
+
 int ExpressionEmitter::through(int n) const {
-  while (n >= 0 && r_.nodes()[std::size_t(n)].kind == NodeKind::neg) n = r_.nodes()[std::size_t(n)].a;
+  while (n >= 0 && r_.nodes()[std::size_t(n)].kind == NodeKind::neg)
+    n = r_.nodes()[std::size_t(n)].a;
   return n;
 }
 
@@ -204,7 +218,7 @@ ExpressionEmitter::Plan ExpressionEmitter::plan(int n) {
     return k.kind == NodeKind::constant && k.value == 2.0 && !temporary(x);
   };
   const int nl = need(p.left), nr = need(p.right);
-  if (p.op == NodeKind::mul && through(p.left) == through(p.right)) {
+  if (p.op == NodeKind::mul && same_value(p.left, p.right)) {
     p.how = Plan::How::square;
     p.first = p.left;
     p.need = std::max(nl, 2);
@@ -513,7 +527,8 @@ void ExpressionEmitter::store_fp(MemoryRef where, const std::string& note) {
 
 void ExpressionEmitter::release_after(int event) {
   auto [begin, end] = release_at_.equal_range(event);
-  for (auto it = begin; it != end; ++it) frame_.release_temporary(slot_[std::size_t(it->second)], words_);
+  for (auto it = begin; it != end; ++it)
+    frame_.release_temporary(slot_[std::size_t(it->second)], words_);
 }
 
 void ExpressionEmitter::define(int n, int event) {
@@ -703,7 +718,9 @@ void ExpressionEmitter::soft_store(int n, int access) {
       sink_.emit({Op::ldl, value + w, 0, false, {Region::workspace, -1}, "value"});
     } else {
       soft_push(core, -1);
-      if (real64_) sink_.emit({Op::ldnl, w, 0, false, leaf_memory(r_, r_.nodes()[std::size_t(core)], temporary(core)), "word"});
+      if (real64_)
+        sink_.emit({Op::ldnl, w, 0, false,
+                    leaf_memory(r_, r_.nodes()[std::size_t(core)], temporary(core)), "word"});
     }
     sink_.address(access);
     sink_.emit({Op::stnl, w, 0, false, where, sink_.element(access) + " :="});

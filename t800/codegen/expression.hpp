@@ -50,6 +50,7 @@ class ExpressionEmitter {
   bool temporary(int n) const { return temporary_[std::size_t(n)]; }
   bool memory_operand(int n) const;
   int through(int n) const;  // n without the sign changes around it
+  bool same_value(int a, int b) const;
   int need(int n);
   int need_expanded(int n);
   bool sign(int n);

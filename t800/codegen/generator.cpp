@@ -130,8 +130,10 @@ class Generator : public EmitSink {
     Body& b = bodies_.back();
     b.flush(label());
     for (const CodeRun& run : routine.runs) b.runs.push_back(run);
-    if (std::find(routines_.begin(), routines_.end(), &routine) == routines_.end())
-      routines_.push_back(&routine);
+    // One routine in memory per name: REAL32OP serves + - * / by its operation code.
+    const auto known = std::find_if(routines_.begin(), routines_.end(),
+                                    [&](const CodeUnit* r) { return r->name == routine.name; });
+    if (known == routines_.end()) routines_.push_back(&routine);
   }
 
   std::string element(int access) const override {

@@ -83,7 +83,8 @@ class PieceCode {
       }
       found = recorded_.emplace(key, std::move(recording)).first;
     }
-    return std::make_pair(std::move(result), t800::ComputeWork{to_operation_mix(work), found->second});
+    return std::make_pair(std::move(result),
+                          t800::ComputeWork{to_operation_mix(work), found->second});
   }
 
  private:
