@@ -1,5 +1,6 @@
-// The occam-like process API workloads are written in (docs/architecture.md, "Programs: processes and channels"). A process is ordinary sequential
-// C++ running in its own SystemC thread on one transputer (or on the host PC, where computing is free):
+// The occam-like process API workloads are written in (docs/architecture.md, "Programs: processes
+// and channels"). A process is ordinary sequential C++ running in its own SystemC thread on one
+// transputer (or on the host PC, where computing is free):
 //   p.compute(mix, "D12");  p.out(ch, message);  Message m = p.in(ch);  p.par({...});
 #pragma once
 
