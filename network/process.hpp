@@ -1,5 +1,6 @@
-// The occam-like process API workloads are written in (DESIGN.md step 3). A process is ordinary sequential
-// C++ running in its own SystemC thread on one transputer (or on the host PC, where computing is free):
+// The occam-like process API workloads are written in (DESIGN.md step 3). A process is ordinary
+// sequential C++ running in its own SystemC thread on one transputer (or on the host PC, where
+// computing is free):
 //   p.compute(mix, "D12");  p.out(ch, message);  Message m = p.in(ch);  p.par({...});
 #pragma once
 
@@ -45,8 +46,9 @@ class Process {
   double now_us() const { return sc_core::sc_time_stamp().to_seconds() * 1e6; }
   Machine& machine() { return machine_; }
 
-  // For the channel implementations: CPU work of communication instructions, giving up and retaking the CPU.
-  void communication_cycles(std::int64_t cycles);
+  // For the channel implementations: CPU work of a communication instruction for a message of
+  // `bytes` (copying it when `copies`), giving up and retaking the CPU.
+  void communicate(std::int64_t bytes, bool copies);
   void deschedule();
   void reschedule();
   // What the process is doing, for deadlock reports.
