@@ -46,8 +46,9 @@ class Process {
   double now_us() const { return sc_core::sc_time_stamp().to_seconds() * 1e6; }
   Machine& machine() { return machine_; }
 
-  // For the channel implementations: CPU work of communication instructions, giving up and retaking the CPU.
-  void communication_cycles(std::int64_t cycles);
+  // For the channel implementations: CPU work of a communication instruction for a message of
+  // `bytes` (copying it when `copies`), giving up and retaking the CPU.
+  void communicate(std::int64_t bytes, bool copies);
   void deschedule();
   void reschedule();
   // What the process is doing, for deadlock reports.

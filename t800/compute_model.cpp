@@ -12,6 +12,7 @@ ComputeModel::ComputeModel(const ProcessorConfig& config, const ComputeSettings&
 
 void ComputeModel::set_memory(MemoryMap map) {
   memory_ = std::move(map);
+  communication_.clear();
   for (auto& [key, c] : compiled_) c.cycles = -1;  // timed again with the new placement
   // The op-count model knows placement by kind only: data and code external when the map put
   // them there.
@@ -60,6 +61,27 @@ std::int64_t ComputeModel::cycles(const ComputeWork& work) const {
     c.cycles =
         std::int64_t(std::ceil(double(time(c.unit).cycles) * settings_.code_efficiency - 1e-9));
   return c.cycles;
+}
+
+std::int64_t ComputeModel::communication_cycles(std::int64_t bytes, bool copies) const {
+  const std::int64_t key = copies ? -bytes - 1 : bytes;
+  auto found = communication_.find(key);
+  if (found != communication_.end()) return found->second;
+  const isa::MemoryRef workspace{isa::Region::workspace, -1};
+  const std::int64_t words = copies ? (bytes + 3) / 4 : 0;  // part words count as whole
+  const isa::Sequence code = {
+      {isa::Op::ldlp, 0, 0, false, {}, "the message's buffer"},
+      {isa::Op::ldl, 1, 0, false, workspace, "the channel"},
+      {isa::Op::ldc, bytes, 0, false, {}, "its length"},
+      {isa::Op::in, 0, words, false, workspace, "in (or out)"},
+  };
+  MemoryView view;
+  view.workspace_external = memory_.workspace_external();
+  view.code_external = memory_.code_external("");
+  view.external_cycles = memory_.external_cycles();
+  const std::int64_t cycles = time_sequence(code, processor_, view).cycles;
+  communication_.emplace(key, cycles);
+  return cycles;
 }
 
 }  // namespace t800

@@ -33,6 +33,10 @@ class ComputeModel {
   ComputeModel(const ProcessorConfig& config, const ComputeSettings& settings);
 
   std::int64_t cycles(const ComputeWork& work) const;
+  // One channel communication as occam compiles it (docs/t800-timing.md, "Communication"): the
+  // buffer's address, the channel word, the length, then in or out -- 2w + 19 when this end copies
+  // the message (an internal channel's second party), 19 when a link engine moves it.
+  std::int64_t communication_cycles(std::int64_t bytes, bool copies) const;
 
   // This processor's code for a recorded kernel (compiled once).
   const codegen::CodeUnit& code(const std::shared_ptr<const codegen::Recording>& kernel) const;
@@ -64,6 +68,7 @@ class ComputeModel {
   CostModel mix_;
   MemoryMap memory_;
   mutable std::unordered_map<const codegen::Recording*, Compiled> compiled_;
+  mutable std::unordered_map<std::int64_t, std::int64_t> communication_;  // by signed length
 };
 
 }  // namespace t800

@@ -22,9 +22,6 @@ std::string_view to_string(Precision precision) {
 }
 
 namespace timing {
-int communication_setup_cycles() {
-  return t800_timing()[isa::Op::in].cycles;
-}
 int start_process_cycles() {
   return t800_timing()[isa::Op::startp].cycles;
 }
@@ -174,13 +171,6 @@ CycleBreakdown CostModel::breakdown(const OperationMix& in) const {
 
 std::int64_t CostModel::cycles(const OperationMix& mix) const {
   return static_cast<std::int64_t>(std::ceil(breakdown(mix).total - 1e-9));
-}
-
-// in/out = 2w + 19 (the instruction table); on a link only the set-up runs on the CPU (U), the
-// bytes move by DMA.
-std::int64_t CostModel::communication_cycles(std::int64_t bytes, bool internal) {
-  const std::int64_t words = internal ? (bytes + 3) / 4 : 0;  // part words count as whole (S)
-  return t800_timing()[isa::Op::in].cycles_for(words, false);
 }
 
 }  // namespace t800

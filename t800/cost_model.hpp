@@ -31,9 +31,6 @@ class CostModel {
   CycleBreakdown breakdown(const OperationMix& mix) const;
   std::int64_t cycles(const OperationMix& mix) const;
   double cycle_ns() const;
-  // CPU cycles of an in/out instruction: set-up only on a link, plus the copy on an internal
-  // channel.
-  static std::int64_t communication_cycles(std::int64_t bytes, bool internal);
 
   Precision precision() const { return precision_; }
   const ProcessorConfig& processor() const { return processor_; }

@@ -15,8 +15,6 @@ namespace t800::timing {
 
 // ---- Sections 3 and 7: communication and scheduling ----
 // in / out = 2w + 19, startp, endp: the instruction table's figures (the same on every type).
-int communication_setup_cycles();  // the 19 of in / out: on a link only the set-up runs on the CPU
-                                   // (U)
 int start_process_cycles();
 int end_process_cycles();
 constexpr int kInterruptLatencyTypical = 19;  // high-priority preemption latency (S)
