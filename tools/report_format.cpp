@@ -16,7 +16,8 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
                      s.network_family.empty() || s.network_source.rfind("family:", 0) == 0
                          ? ""
                          : " (wired as family " + s.network_family + ", " +
-                               std::to_string(r.processors.size() - 1) + " workers)",
+                               std::to_string(r.processors.size() - 1) +
+                               (r.processors.size() == 2 ? " worker)" : " workers)"),
                      r.processors.size(), r.processors.size() == 1 ? "" : "s",
                      fmt::join(s.processor_types, ", "));
   if (!note.empty()) out += note + "\n";
