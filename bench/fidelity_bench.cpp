@@ -83,11 +83,12 @@ struct Row {
 };
 
 std::vector<std::string> fidelity(const std::string& links, const std::string& compute,
-                                  bool skip_numerics, bool reuse_steps) {
+                                  bool skip_numerics, bool reuse_steps,
+                                  const std::string& compute_cost = "instructions") {
   auto flag = [](bool b) { return std::string(b ? "true" : "false"); };
   return {"fidelity.links=" + links, "fidelity.compute=" + compute,
           "fidelity.skip_numerics=" + flag(skip_numerics),
-          "fidelity.reuse_steps=" + flag(reuse_steps)};
+          "fidelity.reuse_steps=" + flag(reuse_steps), "fidelity.compute_cost=" + compute_cost};
 }
 
 // The levels, finest first (the reference of every other row). Every key is given explicitly so the
@@ -102,6 +103,9 @@ std::vector<Level> levels_for(const BenchScene& s) {
     levels.push_back({"auto, skip_numerics off", fidelity("auto", "auto", false, true)});
   else
     levels.push_back({"auto, reuse_steps off", fidelity("auto", "auto", false, false)});
+  // The op-count model instead of the generated code (fidelity.compute_cost).
+  levels.push_back(
+      {"auto, compute_cost mix", fidelity("auto", "auto", s.timing_only, true, "mix")});
   return levels;
 }
 
@@ -173,8 +177,9 @@ std::string fidelity_text(const json& report) {
     if (!f.contains(k)) return std::string("?");
     return f[k].is_string() ? f[k].get<std::string>() : f[k].dump();
   };
-  return fmt::format("links={} compute={} skip_numerics={} reuse_steps={}", text("links"),
-                     text("compute"), text("skip_numerics"), text("reuse_steps"));
+  return fmt::format("links={} compute={} compute_cost={} skip_numerics={} reuse_steps={}",
+                     text("links"), text("compute"), text("compute_cost"), text("skip_numerics"),
+                     text("reuse_steps"));
 }
 
 // One run of one row. Throws std::runtime_error with the command and the child's stderr on failure.

@@ -1,6 +1,6 @@
 // Sanity benchmark (not a test): the cost model's sustained REAL32 rate for a dot product with its data in
 // on-chip RAM on a T800-20, against the datasheet's "in excess of 1.5 MFLOPS sustained" (TN26,
-// t800-timing.md section 8). Prints the instruction mix it assumes per element, so the figure can be checked.
+// docs/t800-timing.md section 8). Prints the instruction mix it assumes per element, so the figure can be checked.
 #include <cstdio>
 
 #include "t800/cost_model.hpp"

@@ -11,22 +11,18 @@ namespace network {
 
 namespace {
 
-std::int64_t copy_cycles(const t800::Message& m) {
-  return t800::CostModel::communication_cycles(m.bytes, /*internal=*/true);
-}
-
-// Rendezvous on one transputer: the first to arrive executes its instruction and deschedules; the second
-// copies the message (2w+19) and wakes the first.
+// Rendezvous on one transputer: the first to arrive executes its instruction and deschedules; the
+// second copies the message (2w+19) and wakes the first.
 void internal_out(Process& p, Channel& c, t800::Message m) {
   if (c.waiting_writer) throw std::logic_error("two writers on channel " + c.name);
   if (c.waiting_reader) {
-    p.communication_cycles(copy_cycles(m));
+    p.communicate(m.bytes, true);
     c.slot = std::move(m);
     c.waiting_reader = nullptr;
     c.handed_over.notify(sc_core::SC_ZERO_TIME);
     return;
   }
-  p.communication_cycles(t800::timing::kCommFixed);
+  p.communicate(m.bytes, false);
   c.slot = std::move(m);
   c.waiting_writer = &p;
   p.deschedule();
@@ -37,12 +33,12 @@ void internal_out(Process& p, Channel& c, t800::Message m) {
 t800::Message internal_in(Process& p, Channel& c) {
   if (c.waiting_reader) throw std::logic_error("two readers on channel " + c.name);
   if (c.waiting_writer) {
-    p.communication_cycles(copy_cycles(c.slot));
+    p.communicate(c.slot.bytes, true);
     c.waiting_writer = nullptr;
     c.handed_over.notify(sc_core::SC_ZERO_TIME);
     return std::move(c.slot);
   }
-  p.communication_cycles(t800::timing::kCommFixed);
+  p.communicate(0, false);  // the reader's length is not known here until the message is (U)
   c.waiting_reader = &p;
   p.deschedule();
   while (c.waiting_reader == &p) sc_core::wait(c.handed_over);
@@ -54,41 +50,47 @@ t800::Message internal_in(Process& p, Channel& c) {
 
 const char* to_string(Channel::Kind kind) {
   switch (kind) {
-    case Channel::Kind::internal: return "internal";
-    case Channel::Kind::direct: return "direct";
-    case Channel::Kind::routed: return "routed";
+    case Channel::Kind::internal:
+      return "internal";
+    case Channel::Kind::direct:
+      return "direct";
+    case Channel::Kind::routed:
+      return "routed";
   }
   return "?";
 }
 
-// On a link the instruction only loads the DMA engine and deschedules; the process is rescheduled when the
-// engine has finished (t800-timing.md sections 3 and 6).
+// On a link the instruction only loads the DMA engine and deschedules; the process is rescheduled
+// when the engine has finished (docs/t800-timing.md sections 3 and 6).
 void link_out(Process& p, t800::Link& link, int end, t800::Message m) {
-  p.communication_cycles(t800::CostModel::communication_cycles(m.bytes, false));
+  p.communicate(m.bytes, false);
   p.deschedule();
   link.transmit(end, std::move(m));
   p.reschedule();
 }
 
 t800::Message link_in(Process& p, t800::Link& link, int end) {
-  p.communication_cycles(t800::CostModel::communication_cycles(0, false));
+  p.communicate(0, false);
   p.deschedule();
   t800::Message m = link.receive(end);
   p.reschedule();
   return m;
 }
 
-// A router hands a message to its reader through a buffer, so a slow reader does not stall the link (U).
+// A router hands a message to its reader through a buffer, so a slow reader does not stall the link
+// (U).
 void deliver_to_mailbox(Process& router, Channel& c, t800::Message m) {
-  router.communication_cycles(copy_cycles(m));
+  router.communicate(m.bytes, true);
   c.mailbox.push_back(std::move(m));
   c.mail.notify(sc_core::SC_ZERO_TIME);
 }
 
 void send(Process& p, Channel& c, t800::Message m) {
   switch (c.kind) {
-    case Channel::Kind::internal: return internal_out(p, c, std::move(m));
-    case Channel::Kind::direct: return link_out(p, *c.link, c.writer_end, std::move(m));
+    case Channel::Kind::internal:
+      return internal_out(p, c, std::move(m));
+    case Channel::Kind::direct:
+      return link_out(p, *c.link, c.writer_end, std::move(m));
     case Channel::Kind::routed: {
       auto hop = p.machine().link_between(c.from, c.path.at(1));
       t800::Message wrapped;
@@ -102,10 +104,12 @@ void send(Process& p, Channel& c, t800::Message m) {
 
 t800::Message receive(Process& p, Channel& c) {
   switch (c.kind) {
-    case Channel::Kind::internal: return internal_in(p, c);
-    case Channel::Kind::direct: return link_in(p, *c.link, 1 - c.writer_end);
+    case Channel::Kind::internal:
+      return internal_in(p, c);
+    case Channel::Kind::direct:
+      return link_in(p, *c.link, 1 - c.writer_end);
     case Channel::Kind::routed: {
-      p.communication_cycles(t800::timing::kCommFixed);
+      p.communicate(0, false);
       if (c.mailbox.empty()) {
         p.deschedule();
         while (c.mailbox.empty()) sc_core::wait(c.mail);

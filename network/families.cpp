@@ -1,7 +1,9 @@
 #include "network/families.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 namespace network {
 
@@ -201,6 +203,35 @@ Topology generate(Family family, int workers, const t800::ProcessorConfig& proce
   }
   validate(b.topology);
   return std::move(b.topology);
+}
+
+namespace {
+
+std::vector<std::pair<std::pair<int, int>, std::pair<int, int>>> wiring(const Topology& t) {
+  std::vector<std::pair<std::pair<int, int>, std::pair<int, int>>> wires;
+  for (const Connection& c : t.connections) {
+    std::pair<int, int> a{c.a.processor, c.a.link}, b{c.b.processor, c.b.link};
+    wires.emplace_back(std::min(a, b), std::max(a, b));
+  }
+  std::sort(wires.begin(), wires.end());
+  return wires;
+}
+
+}  // namespace
+
+std::optional<Family> family_of(const Topology& topology) {
+  const int workers = int(topology.processors.size()) - 1;
+  if (workers < 1 || workers > kMaxWorkers) return std::nullopt;
+  for (Family f : kFamilies) {
+    Topology generated;
+    try {
+      generated = generate(f, workers, t800::ProcessorConfig{}, SourcePos{});
+    } catch (const ConfigError&) {
+      continue;  // no network of this family has that size
+    }
+    if (generated.host == topology.host && wiring(generated) == wiring(topology)) return f;
+  }
+  return std::nullopt;
 }
 
 }  // namespace network

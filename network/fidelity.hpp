@@ -9,6 +9,8 @@ namespace network {
 struct Fidelity {
   t800::LinkFidelity links = t800::LinkFidelity::automatic;
   t800::ComputeFidelity compute = t800::ComputeFidelity::automatic;
+  // Compute costed from generated T800 code (instructions) or by operation mixes (mix).
+  t800::ComputeCost compute_cost = t800::ComputeCost::instructions;
   // Timing only: a workload whose schedule cannot depend on the data leaves out computing the
   // numbers (its report then has no numeric results). Workloads where the data can change the
   // schedule (row interchanges) still compute what decides it.

@@ -35,7 +35,9 @@ Machine::Machine(const Topology& topology, const MachineOptions& options)
         std::make_unique<t800::Transputer>(module_name(spec.name).c_str(), spec.config));
     transputers_.back()->activity().keep_intervals(options.keep_intervals);
     transputers_.back()->cpu().set_fidelity(options.fidelity.compute);
-    cost_models_.emplace_back(spec.config, options.precision, options.code_efficiency);
+    compute_models_.emplace_back(
+        spec.config, t800::ComputeSettings{options.precision, options.code_efficiency,
+                                           options.fidelity.compute_cost, options.checked});
   }
   elaborate_links();
 }
@@ -175,6 +177,60 @@ void Machine::start_router(int node, int from, t800::Link& link, int end) {
   router.set_daemon();
 }
 
+// Each processor's footprint from what its processes run (memory_map.hpp): their workspaces (the
+// largest frame of the PROCs each runs, plus the words below a process's workspace pointer the
+// scheduler uses), their arrays, the code of every PROC and library routine once.
+void Machine::place_memory() {
+  constexpr int kSchedulerWords = 5;  // Iptr, link, state, timer link and time below Wptr
+  constexpr int kUndeclaredFrameWords = 16;  // a process whose code was not declared (U)
+  for (int node = 0; node < processors(); ++node) {
+    t800::MemoryDemand demand;
+    std::map<std::string, int> frame_words;  // per process: its largest frame
+    std::map<std::string, bool> code_seen;
+    std::map<std::string, int> array_bytes;
+    std::vector<const t800::codegen::CodeUnit*> routines;
+    const t800::ComputeModel& model = compute_models_[std::size_t(node)];
+    for (const DeclaredCode& d : declared_code_) {
+      if (d.node != node) continue;
+      const t800::codegen::CodeUnit& unit = model.code(d.kernel);
+      int frame = unit.workspace_words;
+      for (const t800::codegen::CodeUnit* r : unit.routines) {
+        frame = std::max(frame, unit.workspace_words + r->workspace_words);
+        if (std::find(routines.begin(), routines.end(), r) == routines.end()) {
+          routines.push_back(r);
+          demand.library_bytes += r->code_bytes + r->constant_bytes;
+        }
+      }
+      frame_words[d.process] = std::max(frame_words[d.process], frame);
+      if (!code_seen[unit.name]) {
+        code_seen[unit.name] = true;
+        demand.code.push_back({unit.name, unit.code_bytes + unit.constant_bytes});
+      }
+      // Arrays a PROC reaches through a pointer are its process's buffers (the message it
+      // received, the results it sends): one of each name per process, as long as the longest.
+      for (const t800::codegen::ArrayDecl& a : unit.arrays)
+        if (a.storage == t800::codegen::ArrayStorage::pointer) {
+          int& bytes = array_bytes[d.process + "/" + a.name];
+          bytes = std::max(bytes, int(a.length) * (unit.real64 ? 8 : 4));
+        }
+    }
+    for (const auto& [name, bytes] : array_bytes) demand.data_bytes += bytes;
+    for (const auto& p : processes_) {
+      if (p->node() != node) continue;
+      auto frame = frame_words.find(p->name());
+      const int words = frame != frame_words.end() ? frame->second : kUndeclaredFrameWords;
+      demand.workspace_bytes += 4 * (kSchedulerWords + words);
+    }
+    const ProcessorSpec& spec = topology_.processors[std::size_t(node)];
+    try {
+      compute_models_[std::size_t(node)].set_memory(
+          t800::MemoryMap(t800::processor_model(spec.config.type), spec.config.memory, demand));
+    } catch (const t800::PlacementError& e) {
+      throw ConfigError(spec.where, "processor " + spec.name + ": " + e.what());
+    }
+  }
+}
+
 Process& Machine::spawn(int node, const std::string& name, t800::Priority priority,
                         Process::Body body) {
   processes_.push_back(std::make_unique<Process>(*this, node, name, priority));
@@ -210,8 +266,23 @@ void Machine::pooled_thread(PooledThread& t) {
   }
 }
 
-std::vector<BlockedProcess> Machine::run() {
+void Machine::declare_code(int node, const std::string& process,
+                           std::shared_ptr<const t800::codegen::Recording> kernel) {
+  if (finalised_)
+    throw std::logic_error("code for " + process + " declared after the simulation started");
+  if (node == kHost) return;  // the host PC's memory is not modelled
+  declared_code_.push_back({node, process, std::move(kernel)});
+}
+
+void Machine::prepare() {
+  if (prepared_) return;
   finalise_channels();
+  place_memory();
+  prepared_ = true;
+}
+
+std::vector<BlockedProcess> Machine::run() {
+  prepare();
   for (auto& pending : pending_)  // not a structured binding: clang 14 cannot capture those
     handles_.push_back(sc_core::sc_spawn([p = pending.first, body = pending.second] { run_body(p, body); },
                                          sc_core::sc_gen_unique_name("proc")));

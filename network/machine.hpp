@@ -3,7 +3,7 @@
 // channels need.
 //
 // Use: declare channels, spawn processes, then run(). One Machine (one simulation) per OS process:
-// SystemC cannot be restarted (DESIGN.md).
+// SystemC cannot be restarted (docs/architecture.md).
 #pragma once
 
 #include <cstdint>
@@ -18,7 +18,7 @@
 #include "network/fidelity.hpp"
 #include "network/process.hpp"
 #include "network/topology.hpp"
-#include "t800/cost_model.hpp"
+#include "t800/compute_model.hpp"
 #include "t800/transputer.hpp"
 
 namespace network {
@@ -27,6 +27,7 @@ struct MachineOptions {
   t800::LinkConfig link;  // default for connections without their own speed
   t800::Precision precision = t800::Precision::real64;
   double code_efficiency = 1.0;
+  bool checked = true;  // occam's run-time checks compiled into the generated code
   bool keep_intervals = false;  // for traces
   Fidelity fidelity;
   // Limits (seconds; 0 = none): the run stops when its simulated time or the host's wall time reaches
@@ -59,6 +60,10 @@ class Machine {
   // Places a process on a node; it starts when the simulation starts (or at once, if it is
   // running).
   Process& spawn(int node, const std::string& name, t800::Priority priority, Process::Body body);
+  // Before the run: a kernel (an occam PROC) the named process on `node` will run. Its code, frame
+  // and arrays are part of the processor's footprint, which decides what lives in on-chip RAM.
+  void declare_code(int node, const std::string& process,
+                    std::shared_ptr<const t800::codegen::Recording> kernel);
 
   // Runs until every process has ended or nothing can happen any more; returns the processes left
   // blocked (empty on a clean end: a deadlock otherwise).
@@ -68,12 +73,22 @@ class Machine {
   // After a deadlock, the cycle of waits among the blocked processes, if they close one
   // (network/wait_cycle.hpp).
   const std::vector<std::string>& wait_cycle() const { return wait_cycle_; }
+  // What run() does first: channels routed, memory of every processor placed (footprints known).
+  // Called alone, it lets a tool look at the machine without running it.
+  void prepare();
+
+  struct DeclaredCode {
+    int node;
+    std::string process;
+    std::shared_ptr<const t800::codegen::Recording> kernel;
+  };
+  const std::vector<DeclaredCode>& declared_code() const { return declared_code_; }
 
   const Topology& topology() const { return topology_; }
   int processors() const { return int(transputers_.size()); }
   t800::Transputer& transputer(int node) { return *transputers_.at(node); }
   const t800::Transputer& transputer(int node) const { return *transputers_.at(node); }
-  const t800::CostModel& cost_model(int node) const { return cost_models_.at(node); }
+  const t800::ComputeModel& compute_model(int node) const { return compute_models_.at(node); }
   const MachineOptions& options() const { return options_; }
   std::string node_name(int node) const;
 
@@ -96,13 +111,16 @@ class Machine {
  private:
   void elaborate_links();
   void finalise_channels();
+  void place_memory();
   void start_router(int node, int from, t800::Link& link, int end);
   std::vector<int> route(int from, int to) const;
 
   Topology topology_;
   MachineOptions options_;
   std::vector<std::unique_ptr<t800::Transputer>> transputers_;
-  std::vector<t800::CostModel> cost_models_;
+  std::vector<t800::ComputeModel> compute_models_;
+  std::vector<DeclaredCode> declared_code_;
+  bool prepared_ = false;
   std::vector<std::unique_ptr<t800::Link>> link_modules_;
   std::vector<LinkInfo> links_;
   std::vector<std::unique_ptr<Channel>> channels_;

@@ -12,21 +12,30 @@ Process::Process(Machine& machine, int node, std::string name, t800::Priority pr
   descriptor_.priority = priority;
 }
 
-bool Process::on_host() const { return node_ == Machine::kHost; }
+bool Process::on_host() const {
+  return node_ == Machine::kHost;
+}
 
 void Process::compute(std::int64_t cycles, const std::string& label) {
   if (on_host() || cycles <= 0) return;  // the host PC is not what is being measured
-  machine_.transputer(node_).cpu().execute(descriptor_, cycles, t800::ProcessorState::compute, label);
+  machine_.transputer(node_).cpu().execute(descriptor_, cycles, t800::ProcessorState::compute,
+                                           label);
 }
 
 void Process::compute(const t800::OperationMix& mix, const std::string& label) {
-  if (on_host()) return;
-  compute(machine_.cost_model(node_).cycles(mix), label);
+  compute(t800::ComputeWork{mix, nullptr}, label);
 }
 
-void Process::communication_cycles(std::int64_t cycles) {
-  if (on_host() || cycles <= 0) return;
-  machine_.transputer(node_).cpu().execute(descriptor_, cycles, t800::ProcessorState::communicate, {});
+void Process::compute(const t800::ComputeWork& work, const std::string& label) {
+  if (on_host()) return;
+  compute(machine_.compute_model(node_).cycles(work), label);
+}
+
+void Process::communicate(std::int64_t bytes, bool copies) {
+  if (on_host()) return;
+  const std::int64_t cycles = machine_.compute_model(node_).communication_cycles(bytes, copies);
+  machine_.transputer(node_).cpu().execute(descriptor_, cycles, t800::ProcessorState::communicate,
+                                           {});
 }
 
 void Process::deschedule() {
@@ -61,12 +70,12 @@ t800::Message Process::in(Channel& channel) {
 void Process::par(const std::vector<Body>& branches) {
   std::vector<Process*> children;
   for (std::size_t i = 0; i < branches.size(); ++i) {
-    compute(t800::timing::kStartProcess, "startp");
+    compute(t800::timing::start_process_cycles(), "startp");
     const Body& body = branches[i];
-    children.push_back(&machine_.spawn(node_, name() + "." + std::to_string(i), descriptor_.priority,
-                                       [body](Process& child) {
+    children.push_back(&machine_.spawn(node_, name() + "." + std::to_string(i),
+                                       descriptor_.priority, [body](Process& child) {
                                          body(child);
-                                         child.compute(t800::timing::kEndProcess, "endp");
+                                         child.compute(t800::timing::end_process_cycles(), "endp");
                                        }));
   }
   set_status("waiting for its parallel branches");

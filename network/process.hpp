@@ -1,5 +1,6 @@
-// The occam-like process API workloads are written in (DESIGN.md step 3). A process is ordinary sequential
-// C++ running in its own SystemC thread on one transputer (or on the host PC, where computing is free):
+// The occam-like process API workloads are written in (docs/architecture.md, "Programs: processes
+// and channels"). A process is ordinary sequential C++ running in its own SystemC thread on one
+// transputer (or on the host PC, where computing is free):
 //   p.compute(mix, "D12");  p.out(ch, message);  Message m = p.in(ch);  p.par({...});
 #pragma once
 
@@ -10,6 +11,7 @@
 
 #include <systemc>
 
+#include "t800/compute_work.hpp"
 #include "t800/cpu.hpp"
 #include "t800/message.hpp"
 #include "t800/operation_mix.hpp"
@@ -28,6 +30,9 @@ class Process {
   // Runs a block of computation on this process's CPU.
   void compute(std::int64_t cycles, const std::string& label = {});
   void compute(const t800::OperationMix& mix, const std::string& label = {});
+  // Recorded kernels are timed from their T800 code (fidelity.compute_cost = "instructions"), or
+  // by their mix (compute_cost = "mix").
+  void compute(const t800::ComputeWork& work, const std::string& label = {});
   // Sends a message and returns when it has been taken (occam's synchronised `!`).
   void out(Channel& channel, t800::Message message);
   // Waits for and returns the next message on the channel (occam's `?`).
@@ -41,8 +46,9 @@ class Process {
   double now_us() const { return sc_core::sc_time_stamp().to_seconds() * 1e6; }
   Machine& machine() { return machine_; }
 
-  // For the channel implementations: CPU work of communication instructions, giving up and retaking the CPU.
-  void communication_cycles(std::int64_t cycles);
+  // For the channel implementations: CPU work of a communication instruction for a message of
+  // `bytes` (copying it when `copies`), giving up and retaking the CPU.
+  void communicate(std::int64_t bytes, bool copies);
   void deschedule();
   void reschedule();
   // What the process is doing, for deadlock reports.

@@ -1,4 +1,4 @@
-// A validated network of transputers: plain data (DESIGN.md, "topology is data"). Built from a topology file
+// A validated network of transputers: plain data (docs/architecture.md). Built from a topology file
 // (topology_file.hpp) or a family generator (families.hpp); elaborated into SystemC modules elsewhere.
 #pragma once
 

@@ -101,20 +101,33 @@ ProcessorSpec Reader::processor(const toml::table& table) const {
   if (const toml::node* type = table.get("type")) {
     const std::string text =
         *expect(*type, toml::node_type::string, "type", "a string").value<std::string>();
-    auto grade = t800::parse_speed_grade(text);
-    if (!grade)
-      fail(*type,
-           "unknown processor type '" + text + "'; valid types are T800-20, T800-25, T800-30");
-    spec.config.grade = *grade;
+    auto parsed = t800::parse_processor_type(text);
+    if (!parsed)
+      fail(*type, "unknown processor type '" + text + "'; valid types are " +
+                      t800::processor_type_names());
+    spec.config.type = *parsed;
   }
   if (const toml::node* mem = table.get("memory")) spec.config.memory = memory(*mem);
   return spec;
 }
 
+// memory = "auto" | "onchip" | "external" (code and data alike), or a table
+// { data = ..., code = ..., wait_states = n }.
 t800::MemoryConfig Reader::memory(const toml::node& node) const {
-  const toml::table& table = *expect(node, toml::node_type::table, "memory", "a table").as_table();
-  check_keys(table, {"data", "code", "wait_states"}, "memory");
   t800::MemoryConfig config;
+  if (node.is_string()) {
+    const std::string text = *node.value<std::string>();
+    auto placement = t800::parse_placement(text);
+    if (!placement)
+      fail(node, "unknown memory placement '" + text +
+                     "'; valid placements are auto, onchip, external (or a table "
+                     "{ data = ..., code = ..., wait_states = n })");
+    config.data = config.code = *placement;
+    return config;
+  }
+  const toml::table& table =
+      *expect(node, toml::node_type::table, "memory", "a placement or a table").as_table();
+  check_keys(table, {"data", "code", "wait_states"}, "memory");
   for (const char* key : {"data", "code"}) {
     const toml::node* value = table.get(key);
     if (!value) continue;
@@ -123,7 +136,7 @@ t800::MemoryConfig Reader::memory(const toml::node& node) const {
     auto placement = t800::parse_placement(text);
     if (!placement)
       fail(*value, "unknown memory placement '" + text + "' for " + key +
-                       "; valid placements are onchip, external");
+                       "; valid placements are auto, onchip, external");
     (std::string(key) == "data" ? config.data : config.code) = *placement;
   }
   if (const toml::node* ws = table.get("wait_states")) {

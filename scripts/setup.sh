@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages t800sim needs (only those missing), then configures and builds it in ./build.
-# Run as root, or as a user with sudo. Used by scripts/main.sh and scripts/test.sh.
+# Installs the Debian packages t800sim needs (only those missing), then configures the build in ./build.
+# Run as root, or as a user with sudo. Used by scripts/main.sh (which builds only the t800sim executable) and
+# scripts/test.sh (which builds everything: the tests and benchmarks too).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,4 +21,3 @@ if ((${#missing[@]})); then
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"

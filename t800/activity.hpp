@@ -1,7 +1,7 @@
 // Per-processor and per-link accounting of time. A processor is, at each instant, computing (its
 // CPU runs a compute block), communicating (its CPU runs communication instructions, or one of its
 // link engines moves a message for one of its processes) or idle. Totals are always kept; intervals
-// only when a trace asks for them (DESIGN.md: "when no trace is asked for, nothing per-interval is
+// only when a trace asks for them (docs/architecture.md: "when no trace is asked for, nothing per-interval is
 // stored").
 #pragma once
 

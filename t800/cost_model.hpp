@@ -15,22 +15,22 @@ std::optional<Precision> parse_precision(std::string_view text);  // "real32" | 
 std::string_view to_string(Precision precision);
 
 struct CycleBreakdown {
-  double integer_unit = 0;  // cycles the integer unit is busy (including FP issue and data movement)
-  double fpu = 0;           // cycles the FPU executes
-  double total = 0;         // with the overlap rule applied
+  double integer_unit =
+      0;             // cycles the integer unit is busy (including FP issue and data movement)
+  double fpu = 0;    // cycles the FPU executes
+  double total = 0;  // with the overlap rule applied
 };
 
 class CostModel {
  public:
-  // `code_efficiency` multiplies every count: cycles of compiled occam per ideal instruction sequence
-  // (1 = hand-written code). It is the one calibration constant the paper's data may fit (issue 3).
+  // `code_efficiency` multiplies every count: cycles of compiled occam per ideal instruction
+  // sequence (1 = hand-written code). It is the one calibration constant the paper's data may fit
+  // (issue 3).
   CostModel(const ProcessorConfig& processor, Precision precision, double code_efficiency = 1.0);
 
   CycleBreakdown breakdown(const OperationMix& mix) const;
   std::int64_t cycles(const OperationMix& mix) const;
   double cycle_ns() const;
-  // CPU cycles of an in/out instruction: set-up only on a link, plus the copy on an internal channel.
-  static std::int64_t communication_cycles(std::int64_t bytes, bool internal);
 
   Precision precision() const { return precision_; }
   const ProcessorConfig& processor() const { return processor_; }

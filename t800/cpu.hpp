@@ -1,6 +1,6 @@
 // The T800's CPU and its microcoded scheduler: one processor shared by the processes placed on it.
 // High priority processes run until they deschedule and preempt low priority ones (after the
-// interrupt latency); low priority processes are round-robin and timesliced (t800-timing.md section
+// interrupt latency); low priority processes are round-robin and timesliced (docs/t800-timing.md section
 // 7).
 //
 // Every call is made from the SystemC thread of the process concerned. A process holds the CPU from

@@ -39,4 +39,14 @@ std::optional<ComputeFidelity> parse_compute_fidelity(std::string_view text) {
   return std::nullopt;
 }
 
+std::string_view to_string(ComputeCost cost) {
+  return cost == ComputeCost::mix ? "mix" : "instructions";
+}
+
+std::optional<ComputeCost> parse_compute_cost(std::string_view text) {
+  for (ComputeCost c : {ComputeCost::instructions, ComputeCost::mix})
+    if (text == to_string(c)) return c;
+  return std::nullopt;
+}
+
 }  // namespace t800

@@ -25,10 +25,16 @@ namespace t800 {
 
 enum class LinkFidelity { automatic, message, packet };
 enum class ComputeFidelity { automatic, block, fine };
+// How a block of computation is costed: `instructions` -- recorded kernels compiled to T800 code
+// and timed instruction by instruction (compute_model.hpp); `mix` -- the faster op-count model
+// (cost_model.hpp).
+enum class ComputeCost { instructions, mix };
 
 std::string_view to_string(LinkFidelity fidelity);     // "auto", "message", "packet"
 std::string_view to_string(ComputeFidelity fidelity);  // "auto", "block", "fine"
 std::optional<LinkFidelity> parse_link_fidelity(std::string_view text);
 std::optional<ComputeFidelity> parse_compute_fidelity(std::string_view text);
+std::string_view to_string(ComputeCost cost);  // "instructions", "mix"
+std::optional<ComputeCost> parse_compute_cost(std::string_view text);
 
 }  // namespace t800

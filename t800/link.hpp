@@ -1,7 +1,7 @@
 // One physical link between two link ends: two wires, one each way. Direction d (0: end 0 -> end 1,
 // 1: the reverse) sends its data packets on wire d and receives its acknowledges on wire 1-d, so
 // each wire carries one direction's data interleaved with the other direction's acknowledges
-// (t800-timing.md section 6).
+// (docs/t800-timing.md section 6).
 //
 // Protocol, byte by byte: the sender's DMA engine sends an 11-bit data packet, then waits for the
 // 2-bit acknowledge before sending the next. The receiver acknowledges a byte only while an input

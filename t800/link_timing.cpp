@@ -10,7 +10,8 @@ LinkTiming::LinkTiming(const LinkConfig& config)
     : bit_ns(1000.0 / config.speed_mbps),
       data_packet_ns(bit_ns * timing::kDataPacketBits),
       ack_packet_ns(bit_ns * timing::kAckPacketBits),
-      ack_detect_ns(timing::kAckDetectNs + (config.protocol == LinkProtocol::t414 ? data_packet_ns : 0.0)),
+      ack_detect_ns(timing::kAckDetectNs +
+                    (config.protocol == LinkProtocol::t414 ? data_packet_ns : 0.0)),
       ack_process_ns(bit_ns * timing::kAckProcessBits + timing::kAckProcessNs),
       byte_period_ns(std::max(data_packet_ns, ack_detect_ns + ack_packet_ns + ack_process_ns)) {}
 

@@ -1,5 +1,6 @@
-// The link protocol's timing for one link configuration, from timing_table.hpp: what the byte-level Link
-// module uses, and the closed form of one uncontended message (exact while its direction is uncontended).
+// The link protocol's timing for one link configuration, from timing_table.hpp: what the byte-level
+// Link module uses, and the closed form of one uncontended message (exact while its direction is
+// uncontended).
 #pragma once
 
 #include <cstdint>
@@ -14,7 +15,8 @@ struct LinkTiming {
   double bit_ns;
   double data_packet_ns;  // 11 bits
   double ack_packet_ns;   // 2 bits
-  double ack_detect_ns;   // first (T800) or last (T414) bit of a data packet -> the acknowledge starts
+  double
+      ack_detect_ns;  // first (T800) or last (T414) bit of a data packet -> the acknowledge starts
   double ack_process_ns;  // end of an acknowledge -> the sender may start its next data packet
   double byte_period_ns;  // one direction streaming, uncontended
 

@@ -1,5 +1,5 @@
-// What travels over a channel: a length in bytes (which sets the time) and, optionally, the values the real
-// program would send (which the receiving workload reads).
+// What travels over a channel: a length in bytes (which sets the time) and, optionally, the values
+// the real program would send (which the receiving workload reads).
 #pragma once
 
 #include <any>

@@ -6,14 +6,14 @@ namespace t800 {
 
 namespace {
 auto fields(const OperationMix& m) {
-  return std::tie(m.int_simple, m.word_loads, m.word_stores, m.int_mul, m.int_div, m.branches, m.loop_ends,
-                  m.calls, m.prefixes, m.fp_add, m.fp_mul, m.fp_div, m.fp_sqrt, m.fp_compare, m.fp_loads,
-                  m.fp_stores, m.sincos);
+  return std::tie(m.int_simple, m.word_loads, m.word_stores, m.int_mul, m.int_div, m.branches,
+                  m.loop_ends, m.calls, m.prefixes, m.fp_add, m.fp_mul, m.fp_div, m.fp_sqrt,
+                  m.fp_compare, m.fp_loads, m.fp_stores, m.sincos);
 }
 auto fields(OperationMix& m) {
-  return std::tie(m.int_simple, m.word_loads, m.word_stores, m.int_mul, m.int_div, m.branches, m.loop_ends,
-                  m.calls, m.prefixes, m.fp_add, m.fp_mul, m.fp_div, m.fp_sqrt, m.fp_compare, m.fp_loads,
-                  m.fp_stores, m.sincos);
+  return std::tie(m.int_simple, m.word_loads, m.word_stores, m.int_mul, m.int_div, m.branches,
+                  m.loop_ends, m.calls, m.prefixes, m.fp_add, m.fp_mul, m.fp_div, m.fp_sqrt,
+                  m.fp_compare, m.fp_loads, m.fp_stores, m.sincos);
 }
 }  // namespace
 
@@ -29,6 +29,8 @@ OperationMix OperationMix::operator*(std::int64_t n) const {
   return r;
 }
 
-bool OperationMix::operator==(const OperationMix& o) const { return fields(*this) == fields(o); }
+bool OperationMix::operator==(const OperationMix& o) const {
+  return fields(*this) == fields(o);
+}
 
 }  // namespace t800

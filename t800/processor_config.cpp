@@ -2,37 +2,25 @@
 
 namespace t800 {
 
-double cycle_ns(SpeedGrade grade) {
-  switch (grade) {
-    case SpeedGrade::T800_20: return 50.0;
-    case SpeedGrade::T800_25: return 40.0;
-    case SpeedGrade::T800_30: return 100.0 / 3.0;
-  }
-  return 50.0;
+double cycle_ns(ProcessorType type) {
+  return processor_model(type).cycle_ns;
 }
 
-std::string_view to_string(SpeedGrade grade) {
-  switch (grade) {
-    case SpeedGrade::T800_20: return "T800-20";
-    case SpeedGrade::T800_25: return "T800-25";
-    case SpeedGrade::T800_30: return "T800-30";
+std::string_view to_string(Placement placement) {
+  switch (placement) {
+    case Placement::automatic:
+      return "auto";
+    case Placement::on_chip:
+      return "onchip";
+    case Placement::external:
+      return "external";
   }
   return "?";
 }
 
-std::optional<SpeedGrade> parse_speed_grade(std::string_view text) {
-  for (SpeedGrade g : {SpeedGrade::T800_20, SpeedGrade::T800_25, SpeedGrade::T800_30})
-    if (text == to_string(g)) return g;
-  return std::nullopt;
-}
-
-std::string_view to_string(Placement placement) {
-  return placement == Placement::on_chip ? "onchip" : "external";
-}
-
 std::optional<Placement> parse_placement(std::string_view text) {
-  if (text == "onchip") return Placement::on_chip;
-  if (text == "external") return Placement::external;
+  for (Placement p : {Placement::automatic, Placement::on_chip, Placement::external})
+    if (text == to_string(p)) return p;
   return std::nullopt;
 }
 
@@ -46,6 +34,8 @@ std::optional<LinkProtocol> parse_link_protocol(std::string_view text) {
   return std::nullopt;
 }
 
-bool is_valid_link_speed(double mbps) { return mbps == 5.0 || mbps == 10.0 || mbps == 20.0; }
+bool is_valid_link_speed(double mbps) {
+  return mbps == 5.0 || mbps == 10.0 || mbps == 20.0;
+}
 
 }  // namespace t800

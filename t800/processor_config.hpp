@@ -1,39 +1,35 @@
-// The configurable facts of one transputer and its links: plain data, filled in by network/ from topology
-// files, read by the cost model and the SystemC modules.
+// The configurable facts of one transputer and its links: plain data, filled in by network/ from
+// topology files, read by the compute model and the SystemC modules.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "t800/processors/processor_model.hpp"
+
 namespace t800 {
 
-// Speed grades of the T800 (t800-timing.md section 1).
-enum class SpeedGrade { T800_20, T800_25, T800_30 };
+// A processor's cycle time (its type's, processors/processor_model.hpp).
+double cycle_ns(ProcessorType type);
 
-double cycle_ns(SpeedGrade grade);
-std::string_view to_string(SpeedGrade grade);
-std::optional<SpeedGrade> parse_speed_grade(std::string_view text);  // "T800-20", "T800-25", "T800-30"
-
-// Where code and data live (t800-timing.md section 5).
-enum class Placement { on_chip, external };
+// Where code and data live (docs/t800-timing.md, "Memory"). automatic: what fits in on-chip RAM
+// goes there, the rest in external memory, by the placement policy of memory_map.hpp.
+enum class Placement { automatic, on_chip, external };
 std::string_view to_string(Placement placement);
-std::optional<Placement> parse_placement(std::string_view text);  // "onchip" or "external"
+std::optional<Placement> parse_placement(std::string_view text);  // "auto", "onchip" or "external"
 
 struct MemoryConfig {
-  Placement data = Placement::on_chip;
-  Placement code = Placement::on_chip;
-  int wait_states = 0;  // programmed wait states per external access
+  Placement data = Placement::automatic;  // workspaces and arrays
+  Placement code = Placement::automatic;
+  int wait_states = 0;  // programmed wait states per external memory access
 };
 
 struct ProcessorConfig {
-  SpeedGrade grade = SpeedGrade::T800_20;
+  ProcessorType type = ProcessorType::T800_20;
   MemoryConfig memory;
 };
 
-// T800 links acknowledge a byte as soon as its packet starts arriving; T414 links only after the whole packet
-// (t800-timing.md section 6).
-enum class LinkProtocol { overlapped, t414 };
 std::string_view to_string(LinkProtocol protocol);
 std::optional<LinkProtocol> parse_link_protocol(std::string_view text);  // "overlapped" or "t414"
 

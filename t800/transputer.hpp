@@ -1,5 +1,5 @@
-// One T800: a CPU with its scheduler, the accounting of its time, and four link ports. Processes are placed
-// on it by the network layer; its links are wired by the network layer from a topology.
+// One T800: a CPU with its scheduler, the accounting of its time, and four link ports. Processes
+// are placed on it by the network layer; its links are wired by the network layer from a topology.
 #pragma once
 
 #include <array>

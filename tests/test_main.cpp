@@ -1,5 +1,5 @@
 // GoogleTest's main for every test binary. libsystemc.so defines main() and calls sc_main(); a test binary
-// brings its own main, and a trivial sc_main so the library links (DESIGN.md, "Known facts").
+// brings its own main, and a trivial sc_main so the library links (docs/architecture.md).
 #include <gtest/gtest.h>
 #include <systemc>
 

@@ -15,6 +15,7 @@ void add_stress_command(CLI::App& app);  // numerical stability of elimination a
 void add_sweep_command(CLI::App& app);
 void add_merge_command(CLI::App& app);
 void add_vcd_command(CLI::App& app);  // trace CSV -> VCD, through SystemC's sc_trace
+void add_listing_command(CLI::App& app);  // generated T800 code of a scene's kernels
 
 // Exit codes shared by the commands.
 constexpr int kExitOk = 0;

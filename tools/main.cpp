@@ -1,10 +1,13 @@
 // t800sim: the command line. libsystemc.so provides main() and calls sc_main().
 #include <cstdlib>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <systemc>
 
+#include "tools/cli_errors.hpp"
 #include "tools/commands.hpp"
 
 int sc_main(int argc, char* argv[]) {
@@ -20,9 +23,15 @@ int sc_main(int argc, char* argv[]) {
   tools::add_sweep_command(app);
   tools::add_merge_command(app);
   tools::add_vcd_command(app);
+  tools::add_listing_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    if (const auto message =
+            tools::explain_parse_error(app, std::vector<std::string>(argv + 1, argv + argc), e)) {
+      std::cerr << "error: " << *message << "\n";
+      return tools::kExitBadInput;
+    }
     const int code = app.exit(e);
     return code == 0 ? tools::kExitOk : tools::kExitBadInput;
   } catch (const tools::CommandExit& e) {

@@ -1,6 +1,7 @@
 #include "tools/report_format.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace tools {
 
@@ -8,12 +9,23 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
   std::string out = fmt::format("scene {}\n", r.name);
   out += fmt::format("simulated time  {:.3f} us\n", r.simulated_us);
   out += fmt::format("simulator       {:.3f} s wall, {} events\n", r.wall_s, r.events);
+  const workloads::RunSetting& s = r.setting;
+  out += fmt::format("workload kind   {}\n", s.kind);
+  out += fmt::format("precision       {} ({})\n", t800::to_string(s.precision), s.precision_source);
+  out += fmt::format("network         {}{}, {} processor{} ({})\n", s.network_source,
+                     s.network_family.empty() || s.network_source.rfind("family:", 0) == 0
+                         ? ""
+                         : " (wired as family " + s.network_family + ", " +
+                               std::to_string(r.processors.size() - 1) +
+                               (r.processors.size() == 2 ? " worker)" : " workers)"),
+                     r.processors.size(), r.processors.size() == 1 ? "" : "s",
+                     fmt::join(s.processor_types, ", "));
   if (!note.empty()) out += note + "\n";
-  out += fmt::format("\n{:<12} {:>12} {:>12} {:>14} {:>12} {:>8}\n", "processor", "busy_us", "compute_us",
-                     "communicate_us", "idle_us", "util_%");
+  out += fmt::format("\n{:<12} {:>12} {:>12} {:>14} {:>12} {:>8}\n", "processor", "busy_us",
+                     "compute_us", "communicate_us", "idle_us", "util_%");
   for (const auto& p : r.processors)
-    out += fmt::format("{:<12} {:>12.3f} {:>12.3f} {:>14.3f} {:>12.3f} {:>8.1f}\n", p.name, p.busy_us,
-                       p.compute_us, p.communicate_us, p.idle_us, 100.0 * p.utilisation);
+    out += fmt::format("{:<12} {:>12.3f} {:>12.3f} {:>14.3f} {:>12.3f} {:>8.1f}\n", p.name,
+                       p.busy_us, p.compute_us, p.communicate_us, p.idle_us, 100.0 * p.utilisation);
   out += fmt::format("\n{:<44} {:>10} {:>9} {:>12} {:>8}\n", "link direction", "bytes", "messages",
                      "busy_us", "util_%");
   for (const auto& l : r.links)
@@ -38,6 +50,8 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
   return out;
 }
 
-std::string format_json(const workloads::RunReport& r) { return r.to_value().to_json() + "\n"; }
+std::string format_json(const workloads::RunReport& r) {
+  return r.to_value().to_json() + "\n";
+}
 
 }  // namespace tools

@@ -20,7 +20,8 @@ namespace {
 using network::ConfigError;
 using network::SourcePos;
 
-const std::vector<std::string_view> kRobotKeys = {"name", "gravity", "joints"};
+const std::vector<std::string_view> kRobotKeys = {
+    "name", "gravity", "joints", "triangle_inequality", "triangle_inequality_note"};
 const std::vector<std::string_view> kJointKeys = {
     "type", "a", "alpha_deg", "d", "theta_deg", "limits", "mass", "com", "inertia"};
 
@@ -111,9 +112,14 @@ dynamics::JointType joint_type(const Reader& reader, const toml::node& node,
 }
 
 // Physical sanity of the inertial data: m >= 0, principal moments >= 0 and each at most the sum of
-// the other two (a real body's moments obey the triangle inequality).
+// the other two (a real body's moments obey the triangle inequality: Ixx + Iyy = 2 * sum of m z^2
+// + ... >= Izz). Published data sets sometimes break the last rule (Corke's PUMA 560 has Iyy =
+// 0.35, Ixx = Izz = 0 for link 1, where only the moment about the joint axis was identified); a
+// file may keep such data with `triangle_inequality = false` and a `triangle_inequality_note`
+// saying why.
 void check_inertia(const Reader& reader, const toml::table& table,
-                   const dynamics::LinkInertia& link, const std::string& context) {
+                   const dynamics::LinkInertia& link, const std::string& context,
+                   bool triangle_inequality) {
   if (link.mass < 0) {
     reader.fail(table.get("mass")->source(),
                 fmt::format("{}.mass must not be negative (got {})", context, link.mass));
@@ -121,18 +127,45 @@ void check_inertia(const Reader& reader, const toml::table& table,
   const Eigen::Vector3d& i = link.inertia;
   const toml::source_region& where = table.get("inertia")->source();
   if (i.minCoeff() < 0) reader.fail(where, fmt::format("{}.inertia must not be negative", context));
+  if (!triangle_inequality) return;
   const double slack = 1e-12 * i.sum();
   for (int axis = 0; axis < 3; ++axis) {
     if (i(axis) > i.sum() - i(axis) + slack) {
-      reader.fail(where,
-                  fmt::format("{}.inertia: I{} = {} exceeds the sum of the other two moments",
-                              context, "xyz"[axis], i(axis)));
+      reader.fail(
+          where,
+          fmt::format("{}.inertia: I{} = {} exceeds the sum of the other two moments ({}), which "
+                      "no rigid body does. Check the order (Ixx, Iyy, Izz: principal moments "
+                      "about the centre of mass, in the link's DH frame) and the units (kg m^2). "
+                      "To keep a published data set as it is, put triangle_inequality = false "
+                      "and triangle_inequality_note = \"why\" at the top of the file",
+                      context, "xyz"[axis], i(axis), i.sum() - i(axis)));
     }
   }
 }
 
+// `triangle_inequality = false` switches the check off, but only with a note saying why: data that
+// no rigid body could have are kept on purpose, never by accident.
+bool triangle_inequality_checked(const Reader& reader, const toml::table& root) {
+  const toml::node* flag = root.get("triangle_inequality");
+  const toml::node* note = root.get("triangle_inequality_note");
+  if (!flag) {
+    if (note)
+      reader.fail(note->source(),
+                  "triangle_inequality_note without triangle_inequality = false: the note "
+                  "explains switching the check off");
+    return true;
+  }
+  if (!flag->is_boolean()) reader.fail(flag->source(), "triangle_inequality must be true or false");
+  if (*flag->value<bool>()) return true;
+  if (!note || reader.text(*note, "triangle_inequality_note").empty())
+    reader.fail(flag->source(),
+                "triangle_inequality = false needs triangle_inequality_note = \"...\" saying why "
+                "these inertias are kept (e.g. the published data set they come from)");
+  return false;
+}
+
 dynamics::Joint parse_joint(const Reader& reader, const toml::table& table,
-                            const std::string& context) {
+                            const std::string& context, bool triangle_inequality) {
   reader.reject_unknown_keys(table, kJointKeys, context);
   auto field = [&](std::string_view key) -> const toml::node& {
     return reader.require(table, key, context);
@@ -155,7 +188,7 @@ dynamics::Joint parse_joint(const Reader& reader, const toml::table& table,
   joint.link.mass = reader.number(field("mass"), name("mass"));
   joint.link.com = vector3(reader.numbers<3>(field("com"), name("com")));
   joint.link.inertia = vector3(reader.numbers<3>(field("inertia"), name("inertia")));
-  check_inertia(reader, table, joint.link, context);
+  check_inertia(reader, table, joint.link, context, triangle_inequality);
   return joint;
 }
 
@@ -176,9 +209,10 @@ dynamics::RobotModel parse_table(const Reader& reader, const toml::table& root) 
                 fmt::format("the robot needs exactly {} [[joints]] entries, found {}",
                             dynamics::kJoints, joints->size()));
   }
+  const bool triangle_inequality = triangle_inequality_checked(reader, root);
   for (std::size_t i = 0; i < joints->size(); ++i) {
-    model.joints[i] =
-        parse_joint(reader, *joints->get(i)->as_table(), fmt::format("joints[{}]", i + 1));
+    model.joints[i] = parse_joint(reader, *joints->get(i)->as_table(),
+                                  fmt::format("joints[{}]", i + 1), triangle_inequality);
   }
   return model;
 }

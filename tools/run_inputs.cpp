@@ -1,5 +1,6 @@
 #include "tools/run_inputs.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "tools/robot_file.hpp"
@@ -44,10 +45,20 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
   in.options.code_efficiency = scene.code_efficiency;
   in.options.keep_intervals = keep_intervals;
   in.options.fidelity = scene.fidelity;
+  in.options.checked = scene.run_time_checks;
   // Workloads that compute declare their arithmetic precision; the scene loader has validated the
-  // choice.
-  if (scene.workload.has("precision"))
+  // choice. The report says where the precision came from, above all when nobody chose it.
+  const auto& defaults = scene.workload_defaults;
+  if (scene.workload.has("precision")) {
     in.options.precision = *t800::parse_precision(scene.workload.text("precision"));
+    in.precision_source = std::find(defaults.begin(), defaults.end(), "precision") == defaults.end()
+                              ? "workload.precision"
+                              : "the default of workload " + scene.workload_kind +
+                                    "; set workload.precision to choose";
+  } else {
+    in.precision_source =
+        "the simulator's default; workload " + scene.workload_kind + " declares no precision";
+  }
   in.kind = scene.workload_kind;
   in.params = scene.workload;
   // Files a workload names (robot, torque table, trajectory output) are relative to the scene that

@@ -2,11 +2,13 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cctype>
 #include <climits>
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
+#include <set>
 
 #include "network/families.hpp"
 #include "network/toml_limits.hpp"
@@ -77,7 +79,8 @@ toml::table parse_override(const std::string& key, const std::string& value,
   return parse(key + " = " + toml_quoted(value));
 }
 
-void apply_override(toml::table& root, const std::string& text) {
+// Applies one override and returns its key.
+std::string apply_override(toml::table& root, const std::string& text) {
   const std::string flag = "--set " + text;
   const SourcePos at{flag, 0, 0};
   const auto eq = text.find('=');
@@ -106,7 +109,7 @@ void apply_override(toml::table& root, const std::string& text) {
     toml::node* existing = dst->get(parts[i]);
     if (i + 1 == parts.size() || !existing) {
       dst->insert_or_assign(it->first, std::move(it->second));
-      return;
+      return key;
     }
     prefix += (prefix.empty() ? "" : ".") + parts[i];
     if (!existing->is_table())
@@ -116,6 +119,7 @@ void apply_override(toml::table& root, const std::string& text) {
     dst = existing->as_table();
     src = it->second.as_table();
   }
+  return key;  // not reached: the last part always returns
 }
 
 // Scene reading -----------------------------------------------------------------------------------
@@ -136,14 +140,17 @@ class SceneReader {
   std::string text(const toml::node& node, const std::string& key) const;
   std::string text_or(const toml::table& table, const std::string& key, std::string fallback) const;
 
-  t800::LinkConfig link_config(const toml::table& net) const;
-  void topology(const toml::table* net, Scene& scene) const;
+  t800::LinkConfig link_config(const toml::table* net, const network::Topology& topology) const;
+  void apply_processor_keys(const toml::table& net, t800::ProcessorConfig& config) const;
+  void apply_processor_keys(const toml::table& net, network::Topology& topology) const;
+  network::Topology topology(const toml::table* net, SourcePos& origin) const;
   network::Topology generated(const toml::table& net, const toml::node& family) const;
   network::Topology from_file(const toml::node& path) const;
   void workload(Scene& scene) const;
   void calibration(Scene& scene) const;
   void calibration_values(const toml::table& t, Scene& scene) const;
   void fidelity(Scene& scene) const;
+  void compiler(Scene& scene) const;
   bool boolean(const toml::table& t, const std::string& key, bool fallback) const;
   workloads::ParamValue param(const workloads::ParamSpec& spec, const toml::node& value,
                               const network::Topology& topology) const;
@@ -180,8 +187,14 @@ std::string SceneReader::text_or(const toml::table& t, const std::string& key,
   return node ? text(*node, key) : fallback;
 }
 
-t800::LinkConfig SceneReader::link_config(const toml::table& net) const {
+// A network of T414s talks the T414's link protocol unless the scene says otherwise.
+t800::LinkConfig SceneReader::link_config(const toml::table* network,
+                                          const network::Topology& topology) const {
+  static const toml::table empty;
+  const toml::table& net = network ? *network : empty;
   t800::LinkConfig link;
+  if (!topology.processors.empty())
+    link.protocol = t800::processor_model(topology.processors.front().config.type).link_protocol;
   if (const toml::node* speed = net.get("link_speed_mbps")) {
     if (!speed->is_number())
       fail(*speed, "'network.link_speed_mbps': expected a number, got " + type_name(*speed));
@@ -200,7 +213,8 @@ t800::LinkConfig SceneReader::link_config(const toml::table& net) const {
   return link;
 }
 
-void SceneReader::topology(const toml::table* net, Scene& scene) const {
+// `origin` receives where the network was given (Scene::origins).
+network::Topology SceneReader::topology(const toml::table* net, SourcePos& origin) const {
   static const toml::table empty;
   const toml::table& n = net ? *net : empty;
   // Exactly one source of processors; naming the ones found makes a clash easy to fix.
@@ -219,23 +233,65 @@ void SceneReader::topology(const toml::table* net, Scene& scene) const {
          "give only one of network.topology, network.family and [topology]; "
          "this scene has both " +
              given[0].first + " and " + given[1].first);
-  scene.origins["network"] = pos(*given[0].second);
+  origin = pos(*given[0].second);
   const bool family = given[0].first == "network.family";
-  for (const char* key : {"workers", "processor"})
-    if (const toml::node* node = n.get(key); node && !family)
-      fail(*node, "network." + std::string(key) +
-                      " applies only to a generated network (network.family); a topology file "
-                      "sets each [[processor]] itself");
-  if (family) {
-    scene.topology = generated(n, *given[0].second);
-  } else if (given[0].first == "network.topology") {
-    scene.topology = from_file(*given[0].second);
+  if (const toml::node* node = n.get("workers"); node && !family)
+    fail(*node,
+         "network.workers applies only to a generated network (network.family); a topology file "
+         "lists its processors itself. Give a family as well (--set network.family=tree replaces "
+         "the topology file), or compare topology files (sweep --vary "
+         "network.topology=a.toml,b.toml)");
+  if (family) return generated(n, *given[0].second);
+  network::Topology t;
+  if (given[0].first == "network.topology") {
+    t = from_file(*given[0].second);
   } else {
     const toml::node& inline_table = *given[0].second;
     if (!inline_table.is_table())
       fail(inline_table, "'topology': expected a table, got " + type_name(inline_table) +
                              "; to name a topology file, use network.topology");
-    scene.topology = network::parse_topology(*inline_table.as_table(), file_);
+    t = network::parse_topology(*inline_table.as_table(), file_);
+  }
+  apply_processor_keys(n, t);
+  return t;
+}
+
+// network.processor, network.memory, network.wait_states: the type and memory placement of every
+// processor, generated or from a topology file (where they override its [[processor]] settings).
+void SceneReader::apply_processor_keys(const toml::table& net, t800::ProcessorConfig& config) const {
+  if (const toml::node* type = net.get("processor")) {
+    const std::string name = text(*type, "network.processor");
+    auto parsed_type = t800::parse_processor_type(name);
+    if (!parsed_type)
+      fail(*type, "unknown processor type '" + name + "'; valid types are " +
+                      t800::processor_type_names());
+    config.type = *parsed_type;
+  }
+  if (const toml::node* memory = net.get("memory")) {
+    const std::string name = text(*memory, "network.memory");
+    auto placement = t800::parse_placement(name);
+    if (!placement)
+      fail(*memory, "unknown memory placement '" + name +
+                        "'; valid placements are auto (what fits on chip, the rest external), "
+                        "onchip, external");
+    config.memory.data = config.memory.code = *placement;
+  }
+  if (const toml::node* ws = net.get("wait_states")) {
+    if (!ws->is_integer())
+      fail(*ws, "'network.wait_states': expected an integer, got " + type_name(*ws));
+    const std::int64_t n = *ws->value<std::int64_t>();
+    if (n < 0 || n > 1000)
+      fail(*ws, "network.wait_states = " + std::to_string(n) +
+                    " is out of range: give the wait states per external access, 0 to 1000");
+    config.memory.wait_states = static_cast<int>(n);
+  }
+}
+
+void SceneReader::apply_processor_keys(const toml::table& net, network::Topology& topology) const {
+  for (network::ProcessorSpec& spec : topology.processors) {
+    t800::ProcessorConfig config = spec.config;
+    apply_processor_keys(net, config);
+    spec.config = config;
   }
 }
 
@@ -255,14 +311,7 @@ network::Topology SceneReader::generated(const toml::table& net, const toml::nod
   if (count < INT_MIN || count > INT_MAX)
     fail(*workers, "network.workers = " + std::to_string(count) + " is out of range");
   t800::ProcessorConfig config;
-  if (const toml::node* type = net.get("processor")) {
-    const std::string grade = text(*type, "network.processor");
-    auto parsed_grade = t800::parse_speed_grade(grade);
-    if (!parsed_grade)
-      fail(*type,
-           "unknown processor type '" + grade + "'; valid types are T800-20, T800-25, T800-30");
-    config.grade = *parsed_grade;
-  }
+  apply_processor_keys(net, config);
   return network::generate(*parsed, static_cast<int>(count), config, pos(*workers));
 }
 
@@ -365,6 +414,7 @@ void SceneReader::workload(Scene& scene) const {
     const toml::node* value = t.get(spec.name);
     if (value) scene.origins["workload." + spec.name] = pos(*value);
     scene.workload.set(spec.name, value ? param(spec, *value, scene.topology) : spec.default_value);
+    if (!value) scene.workload_defaults.push_back(spec.name);
   }
 }
 
@@ -378,9 +428,15 @@ void SceneReader::calibration(Scene& scene) const {
   const toml::table& t = table(*node, "calibration");
   check_keys(t, {"file", "code_efficiency", "fitted"}, "[calibration]");
   if (const toml::node* file = t.get("file")) {
-    if (text(*file, "calibration.file").empty())
-      fail(*file, "calibration.file is empty: name the calibration file, e.g. \"../calibration.toml\"");
-    const fs::path path = fs::path(file_).parent_path() / text(*file, "calibration.file");
+    const std::string name = text(*file, "calibration.file");
+    const fs::path path = fs::path(file_).parent_path() / name;
+    std::error_code ec;
+    if (name.empty() || !fs::is_regular_file(path, ec))
+      fail(*file,
+           "calibration file '" + name + "' not found (looked for " + path.string() +
+               "; calibration.file is relative to the scene file): copy the calibration file "
+               "there, correct the path, or give code_efficiency and fitted in [calibration] "
+               "instead");
     const toml::table shared = network::parse_toml_file(path.string(), "calibration file");
     const toml::node* inner = shared.get("calibration");
     if (!inner || !inner->is_table())
@@ -424,7 +480,7 @@ void SceneReader::fidelity(Scene& scene) const {
   const toml::node* node = root_.get("fidelity");
   if (!node) return;
   const toml::table& t = table(*node, "fidelity");
-  check_keys(t, {"links", "compute", "skip_numerics", "reuse_steps"}, "[fidelity]");
+  check_keys(t, {"links", "compute", "compute_cost", "skip_numerics", "reuse_steps"}, "[fidelity]");
   if (const toml::node* links = t.get("links")) {
     const std::string name = text(*links, "fidelity.links");
     const auto parsed = t800::parse_link_fidelity(name);
@@ -439,13 +495,33 @@ void SceneReader::fidelity(Scene& scene) const {
       fail(*compute, "unknown compute fidelity '" + name + "'; valid levels are auto, block, fine");
     scene.fidelity.compute = *parsed;
   }
+  if (const toml::node* cost = t.get("compute_cost")) {
+    const std::string name = text(*cost, "fidelity.compute_cost");
+    const auto parsed = t800::parse_compute_cost(name);
+    if (!parsed)
+      fail(*cost, "unknown compute cost '" + name +
+                      "'; valid are instructions (generated T800 code, timed instruction by "
+                      "instruction) and mix (the faster op-count model)");
+    scene.fidelity.compute_cost = *parsed;
+  }
   scene.fidelity.skip_numerics = boolean(t, "skip_numerics", scene.fidelity.skip_numerics);
   scene.fidelity.reuse_steps = boolean(t, "reuse_steps", scene.fidelity.reuse_steps);
 }
 
+// [compiler]: how the occam compiler compiled the program. run_time_checks: its default
+// subscript and FPU error checks (true), or the "no run-time error checking" option (false).
+void SceneReader::compiler(Scene& scene) const {
+  const toml::node* node = root_.get("compiler");
+  if (!node) return;
+  const toml::table& t = table(*node, "compiler");
+  check_keys(t, {"run_time_checks"}, "[compiler]");
+  scene.run_time_checks = boolean(t, "run_time_checks", scene.run_time_checks);
+}
+
 Scene SceneReader::read() {
   check_keys(root_,
-             {"name", "description", "network", "topology", "workload", "calibration", "fidelity"},
+             {"name", "description", "network", "topology", "workload", "calibration", "fidelity",
+              "compiler"},
              "a scene");
   Scene scene;
   scene.file = file_;
@@ -455,13 +531,15 @@ Scene SceneReader::read() {
   if (const toml::node* node = root_.get("network")) net = &table(*node, "network");
   if (net)
     check_keys(*net,
-               {"topology", "family", "workers", "link_speed_mbps", "link_protocol", "processor"},
+               {"topology", "family", "workers", "link_speed_mbps", "link_protocol", "processor",
+                "memory", "wait_states"},
                "[network]");
-  if (net) scene.link = link_config(*net);
-  topology(net, scene);
+  scene.topology = topology(net, scene.origins["network"]);
+  scene.link = link_config(net, scene.topology);
   workload(scene);
   calibration(scene);
   fidelity(scene);
+  compiler(scene);
   return scene;
 }
 
@@ -476,15 +554,49 @@ SourcePos origin_of(const Scene& scene, const std::vector<std::string>& keys) {
   return {scene.file, 0, 0};
 }
 
+// An override that names the network's source (network.topology, network.family or [topology])
+// replaces the scene file's source, so a family scene can be run on a topology file and the other
+// way round (`sweep --vary network.topology=a.toml,b.toml`). Keys set by other overrides stay, so
+// two overridden sources still clash. A topology file brings its own processors: the file's
+// network.workers and network.processor go with the family.
+void replace_network_source(toml::table& root, const std::string& key,
+                            const std::set<std::string>& overridden) {
+  static const std::vector<std::string> sources = {"network.topology", "network.family",
+                                                   "topology"};
+  if (std::find(sources.begin(), sources.end(), key) == sources.end()) return;
+  std::vector<std::string> replaced;
+  for (const std::string& other : sources)
+    if (other != key) replaced.push_back(other);
+  if (key != "network.family") replaced.push_back("network.workers");
+  toml::table* net = root["network"].as_table();
+  for (const std::string& other : replaced) {
+    if (overridden.count(other)) continue;
+    if (other == "topology")
+      root.erase("topology");
+    else if (net)
+      net->erase(other.substr(std::string("network.").size()));
+  }
+}
+
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
   toml::table root = network::parse_toml_file(path, "scene file");
-  for (const std::string& text : overrides) apply_override(root, text);
+  std::set<std::string> overridden;
+  for (const std::string& text : overrides) {
+    const std::string key = apply_override(root, text);
+    overridden.insert(key);
+    replace_network_source(root, key, overridden);
+  }
   return SceneReader(root, path).read();
 }
 
 std::string check_file(const std::string& path) {
   const toml::table root = network::parse_toml_file(path, "file");
-  if (root.contains("workload")) {
+  // A scene is recognised by any table only a scene has, so a scene missing its [workload] is
+  // reported as a scene ("no [workload] table"), not as a topology with unknown keys.
+  bool scene_keys = false;
+  for (const char* key : {"workload", "network", "topology", "calibration", "fidelity"})
+    scene_keys = scene_keys || root.contains(key);
+  if (scene_keys) {
     const Scene scene = load_scene(path);
     return "scene " + scene.name + ": " + plural(scene.topology.processors.size(), "processor") +
            ", " + plural(scene.topology.connections.size(), "link") + ", workload " +

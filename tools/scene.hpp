@@ -1,5 +1,6 @@
-// A scene = topology + workload + options, read once from a TOML file (plus --set overrides) into plain
-// structs. All validation happens here (DESIGN.md "How data flows", step 1).
+// A scene = topology + workload + options, read once from a TOML file (plus --set overrides) into
+// plain structs. All validation happens here (docs/architecture.md, "From a scene file to a
+// report").
 #pragma once
 
 #include <string>
@@ -20,11 +21,15 @@ struct Scene {
   t800::LinkConfig link;  // network.link_speed_mbps, network.link_protocol: defaults for every link
   std::string workload_kind;
   workloads::Params workload;  // validated against the workload's declared parameters
-  // [calibration]: the occam code-efficiency factor (t800::CostModel) and how it was fitted. 1 = uncalibrated.
+  std::vector<std::string> workload_defaults;  // the parameters the scene left at their defaults
+  // [calibration]: the occam code-efficiency factor (t800::CostModel) and how it was fitted. 1 =
+  // uncalibrated.
   double code_efficiency = 1.0;
   std::string calibration_note;
-  // [fidelity]: links, compute, skip_numerics, reuse_steps (network/fidelity.hpp).
+  // [fidelity]: links, compute, compute_cost, skip_numerics, reuse_steps (network/fidelity.hpp).
   network::Fidelity fidelity;
+  // [compiler] run_time_checks: occam's run-time checks compiled in (the compiler's default).
+  bool run_time_checks = true;
   // Where settings were written, for errors found after reading (workloads::SettingError): each
   // workload parameter given ("workload.NAME"), the [workload] table ("workload") and what gave
   // the network ("network"); a file position, or the --set flag that gave it.
@@ -35,9 +40,10 @@ struct Scene {
 // for a workload key, else the scene file.
 network::SourcePos origin_of(const Scene& scene, const std::vector<std::string>& keys);
 
-// Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the value is
-// read as a TOML value (4000, 2.5, "text", true, [1,2]) and, if that fails, as a bare string. Overrides are
-// applied before validation, so a bad override is reported naming the flag. Throws network::ConfigError.
+// Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the
+// value is read as a TOML value (4000, 2.5, "text", true, [1,2]) and, if that fails, as a bare
+// string. Overrides are applied before validation, so a bad override is reported naming the flag.
+// Throws network::ConfigError.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // `t800sim check FILE`: validates a scene or a topology file (a scene has a [workload] table).

@@ -368,7 +368,7 @@ ResultValue energy_run(const dynamics::RobotModel& model,
   s.dt = 1e-3;
   s.steps = quick ? 1000 : 10000;
   s.energy_every = quick ? 10 : 1;
-  s.q0 << 0.1, 0.2, 0.5, 0.3, 0.4, 0.5;  // the reference state of stanford-arm.md
+  s.q0 << 0.1, 0.2, 0.5, 0.3, 0.4, 0.5;  // the README's reference state
   s.qd0 << 0.1, -0.2, 0.05, 0.3, -0.1, 0.2;
   const integration::PassiveResult p = integration::run_passive(model, subtasks, s);
   ResultValue r;

@@ -66,9 +66,23 @@ Sweep plan(const SweepArgs& a) {
   return s;
 }
 
-// A scene that no point can load (a broken file, a bad fixed --set, a misspelt --vary key) would
-// fail every point the same way: say so once, before starting. Otherwise an error in a varied value
-// belongs to its point, which reports it in its row. Loading a scene is cheap: no simulation.
+// An error in a varied value, said as the --vary flag that gave it (the scene loader sees a --set).
+[[noreturn]] void throw_as_vary(const SweepArgs& a, const network::ConfigError& e) {
+  const std::string& where = e.where().file;
+  for (const std::string& flag : a.vary) {
+    const std::string key = flag.substr(0, flag.find('='));
+    if (where.rfind("--set " + key + "=", 0) == 0)
+      throw std::invalid_argument("--vary " + flag + ": the value " +
+                                  where.substr(6 + key.size() + 1) + ": " + e.message() +
+                                  "; valid forms: " + vary_forms());
+  }
+  throw e;
+}
+
+// A scene that no point can load (a broken file, a bad fixed --set, a misspelt --vary key, a
+// value no point accepts) would fail every point the same way: say so once, before starting.
+// Otherwise an error in a varied value belongs to its point, which reports it in its row. Loading a
+// scene is cheap: no simulation.
 void check_scene(const SweepArgs& a, const Sweep& s) {
   std::optional<network::ConfigError> first;
   for (const SweepPoint& point : s.points) {
@@ -81,7 +95,7 @@ void check_scene(const SweepArgs& a, const Sweep& s) {
       if (!first) first = e;
     }
   }
-  throw *first;
+  throw_as_vary(a, *first);
 }
 
 // A point's result from its child; `report` (if given) receives the child's report.
@@ -90,6 +104,12 @@ PointResult judge(const SweepArgs& a, const SweepPoint& point, const ChildOutcom
   nlohmann::json parsed;
   PointResult r = judge_point(point, outcome, parsed);
   if (outcome.timed_out) r.status = fmt::format("error: timed out after {} s", a.timeout_s);
+  // The child saw the point's values as --set flags; the row names them as the varied keys.
+  for (const auto& [key, value] : point) {
+    const std::string flag = "--set " + key + "=" + value;
+    for (auto at = r.status.find(flag); at != std::string::npos; at = r.status.find(flag, at))
+      r.status.erase(at, 6);
+  }
   if (report) *report = std::move(parsed);
   return r;
 }

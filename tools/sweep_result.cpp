@@ -17,8 +17,12 @@ namespace {
 using nlohmann::json;
 
 const char* const kWorkersKey = "network.workers";
-const std::vector<std::string> kColumns = {"tp_us",     "speedup",  "efficiency", "util_min",
-                                           "util_mean", "util_max", "wall_s",     "status"};
+// Each row: the varied keys, what the point ran on, then its measures. Tables written before the
+// setting columns existed (the varied keys, then the measures) are still read.
+const std::vector<std::string> kSettingColumns = {"workload", "precision", "network", "processor",
+                                                  "processors"};
+const std::vector<std::string> kMeasureColumns = {"tp_us",     "speedup",  "efficiency", "util_min",
+                                                  "util_mean", "util_max", "wall_s",     "status"};
 
 // A child's error output as one line: config errors span lines (a message, then the valid choices).
 std::string one_line(const std::string& text) {
@@ -59,7 +63,27 @@ std::string deadlock_text(const json& deadlock) {
   return text;
 }
 
+void fill_setting(PointResult& p, const json& report) {
+  const auto setting = report.find("setting");
+  if (setting == report.end() || !setting->is_object()) return;
+  p.workload = text_at(*setting, "kind");
+  if (const auto precision = setting->find("precision");
+      precision != setting->end() && precision->is_object())
+    p.precision = text_at(*precision, "value");
+  const auto network = setting->find("network");
+  if (network == setting->end() || !network->is_object()) return;
+  const auto family = network->find("family");
+  p.network = family != network->end() && family->is_string() ? family->get<std::string>() : "";
+  if (const auto types = network->find("processor_types");
+      types != network->end() && types->is_array())
+    for (const json& t : *types)
+      if (t.is_string()) p.processor += (p.processor.empty() ? "" : "+") + t.get<std::string>();
+  if (const auto procs = report.find("processors"); procs != report.end() && procs->is_array())
+    p.processors = double(procs->size());
+}
+
 void fill_measures(PointResult& p, const json& report) {
+  fill_setting(p, report);
   // A workload that measures its own Tp (the dynamics farm's window) knows it better than the end.
   const auto workload = report.find("workload");
   const double workload_tp = workload != report.end() && workload->is_object()
@@ -142,6 +166,8 @@ std::vector<std::pair<double, double>> speedups(const ResultsTable& t) {
 std::vector<std::string> row_fields(const PointResult& r, double speedup, double efficiency) {
   std::vector<std::string> f;
   for (const auto& kv : r.params) f.push_back(kv.second);
+  for (const std::string& s : {r.workload, r.precision, r.network, r.processor}) f.push_back(s);
+  f.push_back(csv_number(r.processors, 0));
   for (std::string s : {csv_number(r.tp_us, 6), csv_number(speedup, 6), csv_number(efficiency, 6),
                         csv_number(r.util_min, 6), csv_number(r.util_mean, 6),
                         csv_number(r.util_max, 6), csv_number(r.wall_s, 3), r.status})
@@ -149,11 +175,19 @@ std::vector<std::string> row_fields(const PointResult& r, double speedup, double
   return f;
 }
 
-PointResult row_from_fields(const std::vector<std::string>& keys,
+PointResult row_from_fields(const std::vector<std::string>& keys, bool with_setting,
                             const std::vector<std::string>& f) {
   PointResult r;
   for (std::size_t i = 0; i < keys.size(); ++i) r.params.emplace_back(keys[i], f[i]);
-  const std::size_t c = keys.size();
+  std::size_t c = keys.size();
+  if (with_setting) {
+    r.workload = f[c];
+    r.precision = f[c + 1];
+    r.network = f[c + 2];
+    r.processor = f[c + 3];
+    r.processors = csv_to_number(f[c + 4]);
+    c += kSettingColumns.size();
+  }
   r.tp_us = csv_to_number(f[c]);
   r.util_min = csv_to_number(f[c + 3]);
   r.util_mean = csv_to_number(f[c + 4]);
@@ -192,7 +226,7 @@ json point_to_json(const PointResult& p, const json& report) {
           {"util_mean", number(p.util_mean)},
           {"util_max", number(p.util_max)},
           {"wall_s", number(p.wall_s)},
-          {"report", report}};
+          {"report", report}};  // the setting columns are read back from the report
 }
 
 PointResult point_from_json(const json& j) {
@@ -211,12 +245,15 @@ PointResult point_from_json(const json& j) {
   p.util_mean = number_at(j, "util_mean");
   p.util_max = number_at(j, "util_max");
   p.wall_s = number_at(j, "wall_s");
+  if (const auto report = j.find("report"); report != j.end() && report->is_object())
+    fill_setting(p, *report);
   return p;
 }
 
 std::string results_header(const std::vector<std::string>& keys) {
   std::vector<std::string> names = keys;
-  names.insert(names.end(), kColumns.begin(), kColumns.end());
+  names.insert(names.end(), kSettingColumns.begin(), kSettingColumns.end());
+  names.insert(names.end(), kMeasureColumns.begin(), kMeasureColumns.end());
   return csv_line(names);
 }
 
@@ -240,12 +277,16 @@ ResultsTable read_results_csv(const std::string& path) {
     throw std::invalid_argument(path + ":1: empty file, expected a header");
   const std::vector<std::string> header = parse_csv_line(line);
   const auto first = std::find(header.begin(), header.end(), "tp_us");
-  if (first == header.end() || std::vector<std::string>(first, header.end()) != kColumns)
+  if (first == header.end() || std::vector<std::string>(first, header.end()) != kMeasureColumns)
     throw std::invalid_argument(path +
                                 ":1: not a sweep results table (expected the parameters, then " +
                                 results_header({}).substr(0, results_header({}).size() - 1) + ")");
+  const auto settings = std::size_t(first - header.begin()) >= kSettingColumns.size()
+                            ? first - std::ptrdiff_t(kSettingColumns.size())
+                            : header.begin();
+  const bool with_setting = std::vector<std::string>(settings, first) == kSettingColumns;
   ResultsTable table;
-  table.keys.assign(header.begin(), first);
+  table.keys.assign(header.begin(), with_setting ? settings : first);
   for (int number = 2; std::getline(in, line); ++number) {
     if (line.empty()) continue;
     const std::vector<std::string> fields = parse_csv_line(line);
@@ -253,7 +294,7 @@ ResultsTable read_results_csv(const std::string& path) {
       throw std::invalid_argument(
           fmt::format("{}:{}: {} fields, expected {}", path, number, fields.size(), header.size()));
     try {
-      table.rows.push_back(row_from_fields(table.keys, fields));
+      table.rows.push_back(row_from_fields(table.keys, with_setting, fields));
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(fmt::format("{}:{}: {}", path, number, e.what()));
     }

@@ -22,6 +22,11 @@ struct PointResult {
   double util_min = std::nan(""), util_mean = std::nan(""),
          util_max = std::nan("");  // over processors
   double wall_s = std::nan("");
+  // What the point ran on, from its report (empty when there is none): the workload kind, its
+  // precision, the family its network is wired as (network::family_of; "" for none), the processor
+  // types ("T800-20", or "T800-20+T800-25") and how many processors.
+  std::string workload, precision, network, processor;
+  double processors = std::nan("");
   bool ok() const { return status == "ok"; }
 };
 

@@ -1,5 +1,5 @@
 // Runs commands as child processes, a few at a time, capturing what each prints. Sweeps run every
-// point in its own process because SystemC elaborates one simulation per process (DESIGN.md).
+// point in its own process because SystemC elaborates one simulation per process (docs/architecture.md).
 #pragma once
 
 #include <cstddef>

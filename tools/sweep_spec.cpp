@@ -73,6 +73,12 @@ std::vector<std::string> list_values(const std::string& flag, const std::string&
     const std::string value =
         list.substr(start, comma == std::string::npos ? comma : comma - start);
     if (value.empty()) bad_vary(flag, "empty value in the list '" + list + "'");
+    // "1-8" is a range written the wrong way, not a value anyone means.
+    const auto dash = value.find('-', 1);
+    if (dash != std::string::npos && whole_integer(value.substr(0, dash)) &&
+        whole_integer(value.substr(dash + 1)))
+      bad_vary(flag, "'" + value + "' is not a range: write " + value.substr(0, dash) + ".." +
+                         value.substr(dash + 1));
     values.push_back(value);
     if (comma == std::string::npos) return values;
     start = comma + 1;
@@ -93,9 +99,10 @@ SweepAxis parse_vary(const std::string& flag) {
   SweepAxis axis{flag.substr(0, eq), {}};
   const std::string values = flag.substr(eq + 1);
   if (values.empty()) bad_vary(flag, "no values after '='");
-  // A range is recognised by "..": a list value never needs two dots in a row.
-  axis.values = values.find("..") != std::string::npos ? range_values(flag, values)
-                                                       : list_values(flag, values);
+  // A range is recognised by "..": only a path ("../topologies/a.toml") has two dots in a row too.
+  const bool range =
+      values.find("..") != std::string::npos && values.find('/') == std::string::npos;
+  axis.values = range ? range_values(flag, values) : list_values(flag, values);
   return axis;
 }
 

@@ -21,7 +21,8 @@ using SweepPoint = std::vector<std::pair<std::string, std::string>>;
 //   A..B      integers from A to B, step 1          (1..16)
 //   A..B:xF   geometric: A, A*F, A*F^2, ... up to B (1..64:x2)
 //   A..B:+S   arithmetic: A, A+S, ... up to B       (1..10:+3)
-//   V1,V2,... a list of values, each as --set reads it (10,20 or tree,chain)
+//   V1,V2,... a list of values, each as --set reads it (10,20 or tree,chain or a.toml,b.toml)
+// A value with a '/' is never a range: "../topologies/a.toml" is a one-value list.
 // Throws std::invalid_argument naming the flag and the valid forms.
 SweepAxis parse_vary(const std::string& flag);
 

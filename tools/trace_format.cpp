@@ -19,24 +19,29 @@ using workloads::TraceTrack;
 
 const std::vector<std::string> kHeader = {"kind", "name", "state", "start_us", "end_us", "label"};
 
+// Times closer than half the simulator's resolution (1 ps) are the same time: a reused trajectory
+// step's intervals are shifted by double arithmetic, which can leave such a sliver.
+constexpr double kSameTimeUs = 0.5e-6;
+
 void processor_rows(const TraceTrack& track, double end_us, std::vector<TraceRow>& rows) {
   double at = 0;
   const std::size_t first = rows.size();
   for (const t800::Interval& i : track.intervals) {
-    if (i.start_us > at) rows.push_back({"processor", track.name, "idle", at, i.start_us, ""});
+    if (i.start_us > at + kSameTimeUs)
+      rows.push_back({"processor", track.name, "idle", at, i.start_us, ""});
     const std::string state = t800::to_string(t800::ProcessorState(i.state));
     // The recorder splits a communication where the CPU hands over to a link engine; unlabelled
     // pieces of one state that touch are one interval to a reader. Labelled blocks stay apart
     // (three set-ups in a row).
     TraceRow* last = rows.size() > first ? &rows.back() : nullptr;
     if (last && i.label.empty() && last->label.empty() && last->state == state &&
-        last->end_us == i.start_us)
+        std::abs(last->end_us - i.start_us) < kSameTimeUs)
       last->end_us = i.end_us;
     else
       rows.push_back({"processor", track.name, state, i.start_us, i.end_us, i.label});
     at = i.end_us;
   }
-  if (end_us > at || track.intervals.empty())
+  if (end_us > at + kSameTimeUs || track.intervals.empty())
     rows.push_back({"processor", track.name, "idle", at, end_us, ""});
 }
 

@@ -51,7 +51,8 @@ TEST(PaperCommand, BadOverrideIsReported) {
   EXPECT_NE(o.out.find("5, 10 or 20"), std::string::npos) << o.out;
 }
 
-// The reference state of ../shared/reference/stanford-arm.md (checked there against DART and Orocos KDL).
+// The reference state (full model) whose printed values tests/dynamics/reference_state_test.cpp checks;
+// tests/dynamics/kdl_agreement_test.cpp checks the same model against Orocos KDL.
 TEST(DynamicsCommand, ReferenceState) {
   const auto o = run("dynamics --q 0.1,0.2,0.5,0.3,0.4,0.5 --qd 0.1,-0.2,0.05,0.3,-0.1,0.2 --json");
   ASSERT_EQ(o.exit_code, 0) << o.out;

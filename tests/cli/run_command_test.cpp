@@ -11,30 +11,37 @@ using cli_test::run;
 TEST(RunCommand, TextReportHasProcessorsLinksAndWorkload) {
   const auto o = run("run configs/scenes/pingpong.toml");
   ASSERT_EQ(o.exit_code, 0) << o.out;
-  for (const char* expected : {"simulated time", "processor", "P0", "P1", "link direction", "one_way_us"})
+  for (const char* expected :
+       {"simulated time", "processor", "P0", "P1", "link direction", "one_way_us"})
     EXPECT_NE(o.out.find(expected), std::string::npos) << expected << "\n" << o.out;
 }
 
 TEST(RunCommand, JsonHasTheDocumentedKeys) {
   const auto o = run("run configs/scenes/pingpong.toml --json");
   ASSERT_EQ(o.exit_code, 0) << o.out;
-  for (const char* key : {"\"simulated_us\":", "\"wall_s\":", "\"events\":", "\"processors\":", "\"name\":",
-                          "\"busy_us\":", "\"utilisation\":", "\"links\":", "\"workload\":", "\"one_way_us\":"})
+  for (const char* key :
+       {"\"simulated_us\":", "\"wall_s\":", "\"events\":", "\"processors\":", "\"name\":",
+        "\"busy_us\":", "\"utilisation\":", "\"links\":", "\"workload\":", "\"one_way_us\":"})
     EXPECT_NE(o.out.find(key), std::string::npos) << key;
   EXPECT_EQ(o.out.front(), '{');
 }
 
-// One-way time of a ping-pong = out set-up + the message on the link + in completion; it must grow by one
-// byte period (11.5 bit-times at 20 Mbit/s) per byte, and double the per-byte time at 10 Mbit/s is 22 bits.
+// One-way time of a ping-pong = out set-up + the message on the link + in completion; it must grow
+// by one byte period (11.5 bit-times at 20 Mbit/s) per byte, and double the per-byte time at 10
+// Mbit/s is 22 bits.
 TEST(RunCommand, PingPongOneWayTimeGrowsByOneBytePeriodPerByte) {
-  const double t64 = json_number(run("run configs/scenes/pingpong.toml --json").out, "one_way_us");
-  const double t1064 =
-      json_number(run("run configs/scenes/pingpong.toml --json --set workload.bytes=1064").out, "one_way_us");
-  EXPECT_NEAR((t1064 - t64) / 1000.0, 11.5 * 0.05, 1e-6);
-  const double slow = json_number(
-      run("run configs/scenes/pingpong.toml --json --set workload.bytes=1064 --set network.link_speed_mbps=10")
-          .out,
-      "one_way_us");
+  // 300 and 1300 bytes: both lengths take two prefix bytes in the ldc that sets up the message.
+  const double t300 = json_number(
+      run("run configs/scenes/pingpong.toml --json --set workload.bytes=300").out, "one_way_us");
+  const double t1300 = json_number(
+      run("run configs/scenes/pingpong.toml --json --set workload.bytes=1300").out, "one_way_us");
+  EXPECT_NEAR((t1300 - t300) / 1000.0, 11.5 * 0.05, 1e-6);
+  const double t1064 = json_number(
+      run("run configs/scenes/pingpong.toml --json --set workload.bytes=1064").out, "one_way_us");
+  const double slow = json_number(run("run configs/scenes/pingpong.toml --json --set "
+                                      "workload.bytes=1064 --set network.link_speed_mbps=10")
+                                      .out,
+                                  "one_way_us");
   EXPECT_GT(slow, t1064 * 1.8);
 }
 
@@ -73,7 +80,7 @@ TEST(Help, EveryCommandHasHelp) {
 TEST(Help, RunListsWorkloadKindsAndParameters) {
   const auto o = run("run --help");
   EXPECT_EQ(o.exit_code, 0);
-  for (const char* text : {"pingpong:", "link-stream:", "dynamics-farm:", "elimination:", "trajectory:",
-                           "tp_window = \"farm\"", "bytes = 64"})
+  for (const char* text : {"pingpong:", "link-stream:", "dynamics-farm:", "elimination:",
+                           "trajectory:", "tp_window = \"farm\"", "bytes = 64"})
     EXPECT_NE(o.out.find(text), std::string::npos) << text << "\n" << o.out;
 }

@@ -94,7 +94,7 @@ TEST(SettingErrors, AnEmptyCalibrationFileNameNamesTheLine) {
     tools::load_scene(path);
     FAIL() << "accepted";
   } catch (const network::ConfigError& e) {
-    EXPECT_TRUE(at(e, path, 6, 8, "calibration.file is empty"));
+    EXPECT_TRUE(at(e, path, 6, 8, "calibration file '' not found"));
   }
 }
 

@@ -1,4 +1,4 @@
-// Link throughput against the datasheet (DBK Table 8.1, t800-timing.md section 6).
+// Link throughput against the datasheet (DBK Table 8.1, docs/t800-timing.md section 6).
 #include <gtest/gtest.h>
 
 #include "core_fixtures.hpp"

@@ -1,5 +1,5 @@
 // The T800 scheduler: timeslicing of low-priority processes, preemption by high priority, internal
-// channels (t800-timing.md sections 3 and 7).
+// channels (docs/t800-timing.md sections 3 and 7).
 #include <gtest/gtest.h>
 
 #include "core_fixtures.hpp"
@@ -83,12 +83,14 @@ TEST(Preemption, HighPriorityPreemptsWithinTheLatency) {
   ASSERT_GT(handler_start, 0);
   // The 4-byte message arrives at: sender's 1 ms + out set-up, then 3 byte periods + one data
   // packet.
-  arrived_us = 1000.0 + t800::timing::kCommFixed * kCycleUs + (3 * 0.575 + 0.55);
+  // A link communication's CPU part: ldlp, ldl, ldc (a length below 16), out/in = 1 + 2 + 1 + 19.
+  constexpr int kLinkSetUp = 1 + 2 + 1 + 19;
+  arrived_us = 1000.0 + kLinkSetUp * kCycleUs + (3 * 0.575 + 0.55);
   EXPECT_GE(handler_start - arrived_us, t800::timing::kInterruptLatencyTypical * kCycleUs - 1e-6);
   EXPECT_LE(handler_start - arrived_us, t800::timing::kInterruptLatencyMax * kCycleUs + 1e-6);
   // The background process loses exactly the CPU time the handler used, and the memory cycles the
   // input DMA took while it computed (one per byte of the 4-byte message).
-  const double handler_cpu = (high_cycles + t800::timing::kCommFixed) * kCycleUs;
+  const double handler_cpu = (high_cycles + kLinkSetUp) * kCycleUs;
   const double dma_cycles = 4 * t800::timing::kLinkDmaCyclesPerByte * kCycleUs;
   EXPECT_NEAR(low_end_us, low_cycles * kCycleUs + handler_cpu + dma_cycles, 1e-6);
   EXPECT_EQ(m.transputer(0).cpu().statistics().stolen_cycles,
@@ -107,8 +109,9 @@ TEST(InternalChannel, SecondToArriveCopiesTheMessage) {
   });
   ASSERT_TRUE(m.run().empty());
   EXPECT_EQ(c.kind, network::Channel::Kind::internal);
-  // writer: 19 (arrives first, deschedules); reader: 1000 + 2w+19 with w = 10 words.
-  EXPECT_NEAR(reader_end, (19 + 1000 + (2 * 10 + 19)) * kCycleUs, 1e-6);
+  // Each end: ldlp, ldl, ldc 40 (pfix, ldc), then out/in. The writer arrives first: 1 + 2 + 2 + 19,
+  // and deschedules; the reader: 1000, then 1 + 2 + 2 + (2w + 19) with w = 10 words.
+  EXPECT_NEAR(reader_end, ((1 + 2 + 2 + 19) + 1000 + (1 + 2 + 2 + 2 * 10 + 19)) * kCycleUs, 1e-6);
 }
 
 TEST(Par, BranchesRunConcurrentlyAndJoin) {

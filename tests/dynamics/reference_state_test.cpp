@@ -1,4 +1,4 @@
-// The reference state of stanford-arm.md (full model): D, c, h, q̈ to the printed digits.
+// A reference state of the Stanford arm (full model): D, c, h, q̈ to the printed digits.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -111,5 +111,42 @@ TEST(RobotFile, RejectsSyntaxErrorsAndUnopenableFiles) {
   EXPECT_THROW(tools::load_robot("/nonexistent/robot.toml"), network::ConfigError);
 }
 
+// No rigid body has a principal moment above the sum of the other two: the error says how to fix
+// the file, and how to keep a published data set that has such values.
+TEST(RobotFile, TriangleInequalityErrorSaysHowToFixIt) {
+  const std::string text =
+      robot_text("inertia = [0.276, 0.255, 0.071]", "inertia = [0.0, 0.35, 0.0]");
+  expect_error(text, line_of(text, "inertia = [0.0, 0.35, 0.0]"),
+               "joints[1].inertia: Iy = 0.35 exceeds the sum of the other two moments");
+  expect_error(text, line_of(text, "inertia = [0.0, 0.35, 0.0]"), "(Ixx, Iyy, Izz");
+  expect_error(text, line_of(text, "inertia = [0.0, 0.35, 0.0]"), "triangle_inequality = false");
+}
+
+TEST(RobotFile, TheTriangleInequalityOptOutNeedsANoteAndKeepsTheData) {
+  const std::string broken =
+      robot_text("inertia = [0.276, 0.255, 0.071]", "inertia = [0.0, 0.35, 0.0]");
+  // Without a note the opt-out itself is the error, at its line.
+  const std::string opt_out = "triangle_inequality = false\n" + broken;
+  expect_error(opt_out, 1, "needs triangle_inequality_note");
+  const std::string noted =
+      "triangle_inequality = false\ntriangle_inequality_note = \"published data\"\n" + broken;
+  const RobotModel model = tools::parse_robot(noted, "robot.toml");
+  EXPECT_DOUBLE_EQ(model.joints[0].link.inertia.y(), 0.35);
+  // A note without the opt-out is a mistake too.
+  expect_error("triangle_inequality_note = \"x\"\n" + robot_text("", ""), 1,
+               "without triangle_inequality = false");
+}
+
+// The shipped PUMA 560 file is Corke's published data set, kept with the opt-out: link 1's moments
+// as the toolbox gives them (0, 0.35, 0).
+TEST(RobotFile, LoadsThePublishedPuma560) {
+  const RobotModel model =
+      tools::load_robot(std::string(T800SIM_SOURCE_DIR) + "/configs/robots/puma560.toml");
+  EXPECT_EQ(model.name, "Puma 560");
+  EXPECT_EQ(model.joints[0].link.inertia, Eigen::Vector3d(0, 0.35, 0));
+  EXPECT_DOUBLE_EQ(model.joints[1].dh.a, 0.4318);
+  EXPECT_DOUBLE_EQ(model.joints[2].dh.d, 0.15005);
+}
+
 }  // namespace
 }  // namespace dynamics

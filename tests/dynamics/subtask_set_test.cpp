@@ -1,6 +1,6 @@
 // The derived subtask sets: 17 D + 61 C + 4 h (full) and 17 D + 43 C + 4 h (paper), and the kept
-// Coriolis list equal to stanford-arm.md's (typed in here as the independent reference; the code
-// derives it).
+// Coriolis list equal to the 43 terms worked out by hand from the arm's data (typed in here as the
+// independent reference; the code derives it).
 #include <gtest/gtest.h>
 
 #include <map>
@@ -59,7 +59,7 @@ TEST(SubtaskSets, ZeroInertiaAndGravityTermsAreTheDocumentedOnes) {
 }
 
 TEST(SubtaskSets, PaperCoriolisListMatchesStanfordArmReference) {
-  // stanford-arm.md, "The kept C terms, listed as i: jk".
+  // The kept C terms, listed as i: jk.
   const std::map<int, std::string> listed = {{1, "12 13 14 15 22 23 24 25 44 45 55"},
                                              {2, "11 14 15 23 24 25 44 45 55"},
                                              {3, "11 14 15 22 24 25 55"},
@@ -88,6 +88,31 @@ TEST(SubtaskSets, DroppedTermsAllInvolveJointSixAndAreSmall) {
     EXPECT_LE(m.max_abs, 1.5e-4) << m.term.name;
   }
   EXPECT_EQ(dropped, 18);
+}
+
+// The simplification's assumption, checked on the robot at hand: for the Stanford arm every dropped
+// term is at least 1/kNegligible times smaller than every kept Coriolis term; for Corke's PUMA 560
+// it is not, and the paper model is refused with a message naming the assumption.
+TEST(SubtaskSets, PaperSimplificationHoldsForTheStanfordArmOnly) {
+  const PaperSimplification stanford_arm = paper_simplification(stanford());
+  EXPECT_TRUE(stanford_arm.holds());
+  EXPECT_EQ(stanford_arm.dropped.size(), 18u);
+  EXPECT_LE(stanford_arm.largest_dropped, kNegligible * stanford_arm.smallest_kept);
+  const RobotModel puma =
+      tools::load_robot(std::string(T800SIM_SOURCE_DIR) + "/configs/robots/puma560.toml");
+  const PaperSimplification p = paper_simplification(puma);
+  EXPECT_FALSE(p.holds());
+  EXPECT_GT(p.largest_dropped, kNegligible * p.smallest_kept);
+  for (const Subtask& t : p.dropped) EXPECT_TRUE(t.i == 5 || t.j == 5 || t.k == 5) << t.name;
+  try {
+    derive_subtasks(puma, ModelVariant::paper);
+    FAIL() << "the paper model was derived for the PUMA 560";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    for (const char* words : {"Puma 560", "axial inertia", "negligible", "model \"full\""})
+      EXPECT_NE(what.find(words), std::string::npos) << words << ": " << what;
+  }
+  EXPECT_NO_THROW(derive_subtasks(puma, ModelVariant::full));
 }
 
 }  // namespace

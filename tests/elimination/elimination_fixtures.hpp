@@ -1,4 +1,4 @@
-// Systems shared by the elimination tests: the arm at the reference state of stanford-arm.md,
+// Systems shared by the elimination tests: the arm at its reference state (the README's),
 // random systems, and small hand-made cases.
 #pragma once
 

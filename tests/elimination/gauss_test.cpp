@@ -18,7 +18,7 @@ TEST(Gauss, ReferenceStateGivesThePublishedAcceleration) {
   const auto s = reference_system();
   const auto x = elimination::solve(s.a, s.b, rule(Pivoting::simple));
   ASSERT_EQ(x.status, Status::ok);
-  // stanford-arm.md, six significant figures
+  // the reference state's q̈, six significant figures
   const double expected[] = {0.070682, -0.318066, -9.72784, 5.13206, 0.548757, -4.902692};
   for (int i = 0; i < 6; ++i)
     EXPECT_NEAR(x.x[std::size_t(i)], expected[i], 1e-5 * std::fabs(expected[i]) + 1e-6);

@@ -146,6 +146,21 @@ TEST(Families, OtherFilesMatchTheirFamilies) {
   expect_same_structure(network::load_topology(dir + "mesh-3x3.toml"), make(Family::mesh, 8));
 }
 
+// Reports say which family a network is wired as, whatever its source.
+TEST(Families, FamilyOfRecognisesFilesWiredAsAFamily) {
+  const std::string dir = nettest::source_dir() + "/configs/topologies/";
+  EXPECT_EQ(network::family_of(network::load_topology(dir + "tree-9.toml")), Family::tree);
+  EXPECT_EQ(network::family_of(network::load_topology(dir + "ring-8.toml")), Family::ring);
+  EXPECT_EQ(network::family_of(network::load_topology(dir + "mesh-3x3.toml")), Family::mesh);
+  EXPECT_EQ(network::family_of(make(Family::hypercube, 7)), Family::hypercube);
+  // One link moved: no family's network any more.
+  Topology moved = network::load_topology(dir + "tree-3.toml");
+  ASSERT_FALSE(moved.connections.empty());
+  moved.connections.back().b.link = moved.connections.back().b.link == 3 ? 2 : 3;
+  EXPECT_EQ(network::family_of(moved), std::nullopt);
+  EXPECT_EQ(network::family_of(network::load_topology(dir + "elimination-m3.toml")), std::nullopt);
+}
+
 TEST(Families, ChainPathLengths) {
   const Topology t = make(Family::chain, 9);
   for (int i = 0; i <= 9; ++i)
@@ -200,9 +215,9 @@ TEST(Families, HypercubePathLengthsAreHamming) {
 
 TEST(Families, ProcessorConfigIsApplied) {
   t800::ProcessorConfig config;
-  config.grade = t800::SpeedGrade::T800_30;
+  config.type = t800::ProcessorType::T800_30;
   const Topology t = generate(Family::ring, 4, config, kWhere);
-  for (const auto& p : t.processors) EXPECT_EQ(p.config.grade, t800::SpeedGrade::T800_30);
+  for (const auto& p : t.processors) EXPECT_EQ(p.config.type, t800::ProcessorType::T800_30);
 }
 
 TEST(Families, TooFewWorkers) {

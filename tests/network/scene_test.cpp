@@ -76,7 +76,7 @@ TEST(Scene, GeneratedFamily) {
                  "direction = \"both\"\n");
   const tools::Scene s = load_scene(path);
   EXPECT_EQ(s.topology.processors.size(), 7u);
-  EXPECT_EQ(s.topology.processors[6].config.grade, t800::SpeedGrade::T800_25);
+  EXPECT_EQ(s.topology.processors[6].config.type, t800::ProcessorType::T800_25);
   EXPECT_EQ(s.workload.text("direction"), "both");
   EXPECT_EQ(s.workload.integer("messages"), 64);
 }
@@ -132,9 +132,20 @@ TEST(Scene, FamilyKeysNeedAFamily) {
   EXPECT_TRUE(bad_scene("[network]\ntopology = \"" + pair_path() +
                             "\"\nworkers = 3\n[workload]\nkind = \"pingpong\"\n",
                         3, 11, {"network.workers applies only to a generated network"}));
-  EXPECT_TRUE(bad_scene("[network]\ntopology = \"" + pair_path() +
-                            "\"\nprocessor = \"T800-30\"\n[workload]\nkind = \"pingpong\"\n",
-                        3, 13, {"network.processor applies only"}));
+}
+
+// network.processor and network.memory set every processor of a topology file too.
+TEST(Scene, ProcessorKeysOverrideATopologyFile) {
+  const std::string path = write_file("override.toml", "[network]\ntopology = \"" + pair_path() +
+                                       "\"\nprocessor = \"T805-30\"\nmemory = \"external\"\n"
+                                       "wait_states = 2\n[workload]\nkind = \"pingpong\"\n");
+  const tools::Scene s = tools::load_scene(path);
+  for (const auto& p : s.topology.processors) {
+    EXPECT_EQ(p.config.type, t800::ProcessorType::T805_30);
+    EXPECT_EQ(p.config.memory.code, t800::Placement::external);
+    EXPECT_EQ(p.config.memory.data, t800::Placement::external);
+    EXPECT_EQ(p.config.memory.wait_states, 2);
+  }
 }
 
 TEST(Scene, FamilyErrors) {

@@ -57,11 +57,11 @@ speed_mbps = 10
   EXPECT_EQ(t.description, "two processors");
   EXPECT_EQ(t.source, path);
   ASSERT_EQ(t.processors.size(), 2u);
-  EXPECT_EQ(t.processors[0].config.grade, t800::SpeedGrade::T800_25);
+  EXPECT_EQ(t.processors[0].config.type, t800::ProcessorType::T800_25);
   EXPECT_EQ(t.processors[0].config.memory.data, t800::Placement::external);
   EXPECT_EQ(t.processors[0].config.memory.code, t800::Placement::on_chip);
   EXPECT_EQ(t.processors[0].config.memory.wait_states, 2);
-  EXPECT_EQ(t.processors[1].config.grade, t800::SpeedGrade::T800_20);  // the default
+  EXPECT_EQ(t.processors[1].config.type, t800::ProcessorType::T800_20);  // the default
   EXPECT_EQ(t.processors[1].where.line, 9);
   ASSERT_EQ(t.connections.size(), 1u);
   EXPECT_EQ(t.connections[0].a, (network::LinkEnd{0, 2}));
@@ -175,7 +175,7 @@ TEST(TopologyFile, WrongTypes) {
   EXPECT_TRUE(bad_file(std::string(kHead) + "type = 800\n", 9, 8,
                        {"'type': expected a string, got integer"}));
   EXPECT_TRUE(bad_file(std::string(kHead) + "memory = 4\n", 9, 10,
-                       {"'memory': expected a table, got integer"}));
+                       {"'memory': expected a placement or a table, got integer"}));
   EXPECT_TRUE(bad_file(std::string(kHead) + "memory = { wait_states = 1.5 }\n", 9, 26,
                        {"'wait_states': expected an integer, got floating-point number"}));
   EXPECT_TRUE(bad_file(with_link("P0.link1", "P1.link0", "speed_mbps = \"fast\"\n"), 13, 14,

@@ -155,13 +155,35 @@ TEST(ResultsCsv, ReadsBackWhatItWrites) {
   const std::string dir = sweep_test::fresh_dir();
   PointResult bad = row("1", "64", std::nan(""));
   bad.status = "error: x, \"y\"";
-  ResultsTable t{{"network.workers", "workload.bytes"}, {bad, row("2", "64", 100.25)}};
+  PointResult good = row("2", "64", 100.25);
+  good.workload = "pingpong";
+  good.network = "tree";
+  good.processor = "T800-20+T800-25";
+  good.processors = 3;
+  ResultsTable t{{"network.workers", "workload.bytes"}, {bad, good}};
   sweep_test::write_file(dir + "/r.csv", results_csv(t));
   const ResultsTable back = read_results_csv(dir + "/r.csv");
   EXPECT_EQ(back.keys, t.keys);
   ASSERT_EQ(back.rows.size(), 2u);
   EXPECT_EQ(back.rows[0].status, bad.status);
   EXPECT_DOUBLE_EQ(back.rows[1].tp_us, 100.25);
+  EXPECT_EQ(back.rows[1].workload, "pingpong");
+  EXPECT_EQ(back.rows[1].network, "tree");
+  EXPECT_EQ(back.rows[1].processor, "T800-20+T800-25");
+  EXPECT_DOUBLE_EQ(back.rows[1].processors, 3);
+}
+
+// Tables written before the setting columns existed are still read (a sweep resumes into them).
+TEST(ResultsCsv, ReadsTablesWithoutTheSettingColumns) {
+  const std::string dir = sweep_test::fresh_dir();
+  sweep_test::write_file(dir + "/old.csv",
+                         "network.workers,tp_us,speedup,efficiency,util_min,util_mean,util_max,"
+                         "wall_s,status\n3,8556.25,,,0.1,0.5,0.9,0.02,ok\n");
+  const ResultsTable back = read_results_csv(dir + "/old.csv");
+  EXPECT_EQ(back.keys, std::vector<std::string>{"network.workers"});
+  ASSERT_EQ(back.rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(back.rows[0].tp_us, 8556.25);
+  EXPECT_EQ(back.rows[0].network, "");
 }
 
 TEST(ResultsCsv, ForeignFilesAreRefusedWithTheirName) {

@@ -28,8 +28,8 @@ TEST(SweepCommand, OneRowPerPointWithTheDocumentedColumns) {
   const auto t = table(out);
   ASSERT_EQ(t.size(), 7u);
   EXPECT_EQ(lines(read_file(out))[0],
-            "workload.bytes,workload.iterations,tp_us,speedup,efficiency,util_min,util_mean,util_"
-            "max,wall_s,status");
+            "workload.bytes,workload.iterations,workload,precision,network,processor,processors,"
+            "tp_us,speedup,efficiency,util_min,util_mean,util_max,wall_s,status");
   EXPECT_EQ(t[1][0], "16");
   EXPECT_EQ(t[1][1], "2");
   EXPECT_EQ(t[6][0], "64");
@@ -40,7 +40,12 @@ TEST(SweepCommand, OneRowPerPointWithTheDocumentedColumns) {
     EXPECT_LE(std::stod(t[r][column(t, "util_min")]), std::stod(t[r][column(t, "util_max")]));
   }
   // Twice the iterations, twice the time (same message size).
-  EXPECT_NEAR(std::stod(t[2][2]), 2 * std::stod(t[1][2]), 0.01 * std::stod(t[1][2]));
+  const std::size_t tp = column(t, "tp_us");
+  EXPECT_NEAR(std::stod(t[2][tp]), 2 * std::stod(t[1][tp]), 0.01 * std::stod(t[1][tp]));
+  // What each point ran on: the scene's pair of T800-20s, wired as the 1-worker chain/tree.
+  EXPECT_EQ(t[1][column(t, "workload")], "pingpong");
+  EXPECT_EQ(t[1][column(t, "processor")], "T800-20");
+  EXPECT_EQ(t[1][column(t, "processors")], "2");
   // Not a terminal: one progress line per point.
   EXPECT_NE(o.out.find("[6/6]"), std::string::npos) << o.out;
 }
@@ -55,6 +60,7 @@ TEST(SweepCommand, AFailingPointIsReportedAndTheOthersRun) {
   const std::string status = t[1][column(t, "status")];
   EXPECT_EQ(status.rfind("error: ", 0), 0u) << status;
   EXPECT_NE(status.find("workload.bytes=0"), std::string::npos) << status;
+  EXPECT_EQ(status.find("--set"), std::string::npos) << status;  // named as the varied key
   EXPECT_EQ(t[2][column(t, "status")], "ok");
 }
 
@@ -109,6 +115,42 @@ TEST(SweepCommand, BadVarySyntaxNamesTheFlagAndTheForms) {
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_NE(o.out.find("--vary workload.bytes=1...x"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("A..B:xF"), std::string::npos) << o.out;
+}
+
+// A wrong value in a --vary is reported as that flag (not as the --set the point becomes), with the
+// valid forms.
+TEST(SweepCommand, BadVaryValuesNameTheVaryFlagAndTheForms) {
+  for (const char* vary : {"network.workers=1-8", "network.workers=a,b"}) {
+    const auto o = run(std::string("sweep configs/scenes/dynamics-farm.toml --vary ") + vary +
+                       " -o /dev/null 2>&1");
+    EXPECT_EQ(o.exit_code, 2) << o.out;
+    EXPECT_NE(o.out.find(std::string("--vary ") + vary), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("valid forms"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("A..B"), std::string::npos) << o.out;
+    EXPECT_EQ(o.out.find("--set"), std::string::npos) << o.out;
+  }
+}
+
+// A user's own topology files are swept as a list; each row says what network it ran. A topology
+// file wired as a family gives that family's Tp (tree-3.toml is the generated 3-worker tree).
+TEST(SweepCommand, TopologyFilesCanBeSwept) {
+  const std::string out = fresh_dir() + "/r.csv";
+  const auto o =
+      run("sweep configs/scenes/dynamics-farm.toml --vary "
+          "network.topology=../topologies/tree-3.toml,../topologies/chain-5.toml -o " +
+          out + " 2>&1");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  const auto t = table(out);
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[1][column(t, "network")], "tree");
+  EXPECT_EQ(t[1][column(t, "processors")], "4");
+  EXPECT_EQ(t[2][column(t, "network")], "chain");
+  EXPECT_EQ(t[2][column(t, "processors")], "5");
+  const auto family =
+      run("run configs/scenes/dynamics-farm.toml --set network.workers=3 --json 2>&1");
+  ASSERT_EQ(family.exit_code, 0) << family.out;
+  EXPECT_NEAR(std::stod(t[1][column(t, "tp_us")]), cli_test::json_number(family.out, "tp_us"),
+              1e-3);
 }
 
 TEST(SweepCommand, InputErrorsAreClearAndRunNothing) {

@@ -33,8 +33,9 @@ TEST(Vary, ListKeepsTextsAsGiven) {
 
 // Every malformed flag is an error that quotes the flag and lists the valid forms.
 TEST(Vary, BadSyntaxNamesTheFlagAndTheValidForms) {
-  for (const char* bad : {"workers", "=1..4", "k=", "k=1..", "k=a..b", "k=5..1", "k=1..8:x1",
-                          "k=1..8:y2", "k=1..8:+0", "k=0..8:x2", "k=1,,2", "k=1.5..3"}) {
+  for (const char* bad :
+       {"workers", "=1..4", "k=", "k=1..", "k=a..b", "k=5..1", "k=1..8:x1", "k=1..8:y2",
+        "k=1..8:+0", "k=0..8:x2", "k=1,,2", "k=1.5..3", "k=1-8", "k=2,4-8"}) {
     try {
       parse_vary(bad);
       ADD_FAILURE() << bad << " was accepted";
@@ -44,6 +45,24 @@ TEST(Vary, BadSyntaxNamesTheFlagAndTheValidForms) {
       EXPECT_NE(what.find("A..B:xF"), std::string::npos) << what;
     }
   }
+}
+
+// "1-8" is a range written the wrong way: the message shows the right way.
+TEST(Vary, ADashedRangeIsShownAsARange) {
+  try {
+    parse_vary("network.workers=1-8");
+    FAIL() << "1-8 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("write 1..8"), std::string::npos) << e.what();
+  }
+}
+
+// Paths have two dots in a row too: a list of topology files is a list, not a range.
+TEST(Vary, TopologyFilesAreAList) {
+  EXPECT_EQ(parse_vary("network.topology=../topologies/a.toml,../topologies/b.toml").values,
+            (Values{"../topologies/a.toml", "../topologies/b.toml"}));
+  EXPECT_EQ(parse_vary("network.topology=../topologies/a.toml").values,
+            (Values{"../topologies/a.toml"}));
 }
 
 TEST(Vary, HugeRangesAreRefused) {

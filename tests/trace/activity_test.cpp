@@ -1,4 +1,4 @@
-// The recorder behind traces: totals always, intervals only when asked (DESIGN.md: when no trace is
+// The recorder behind traces: totals always, intervals only when asked (docs/architecture.md: when no trace is
 // asked for, nothing per-interval is stored). Each test runs one small SystemC simulation (one per
 // process).
 #include <gtest/gtest.h>

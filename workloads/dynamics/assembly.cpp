@@ -11,6 +11,27 @@ OpCounts count_assembly_ops(const std::vector<Subtask>& subtasks) {
   return tally.counts();
 }
 
+// The workers' values arrive in one array, q-dot in another; c is the master's.
+std::shared_ptr<const t800::codegen::Recording> record_assembly(
+    const std::vector<Subtask>& subtasks, bool real64) {
+  auto recording = std::make_shared<t800::codegen::Recording>("MASTER.ASSEMBLE", real64);
+  const t800::codegen::RecordingScope scope(*recording);
+  auto run = [&](auto scalar) {
+    using S = decltype(scalar);
+    std::vector<S> values(subtasks.size(), S(0.5));
+    std::array<S, kJoints> qd;
+    qd.fill(S(0.25));
+    occam::declare(values, "values");
+    occam::declare(qd, "qdot");
+    coriolis_vector(subtasks, values, qd);
+  };
+  if (real64)
+    run(Counted<double>());
+  else
+    run(Counted<float>());
+  return recording;
+}
+
 Dynamics evaluate_all(const RobotModel& model, const std::vector<Subtask>& subtasks,
                       const JointVector& q, const JointVector& qd) {
   Dynamics data;

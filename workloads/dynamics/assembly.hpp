@@ -5,6 +5,7 @@
 
 #include <Eigen/Cholesky>
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "workloads/dynamics/evaluate.hpp"
@@ -65,13 +66,16 @@ std::array<S, kJoints> coriolis_vector(const std::vector<Subtask>& subtasks,
     c[static_cast<std::size_t>(task.i)] += Folded<S>::variable(values[t]) * weight[sj][sk];
   }
   std::array<S, kJoints> result;
+  occam::declare(result, "c");
   for (std::size_t i = 0; i < result.size(); ++i) result[i] = c[i].value();
   note_stores<S>(kJoints);
   return result;
 }
 
-// The master's operations in coriolis_vector for this subtask list.
+// The master's operations in coriolis_vector for this subtask list, and its code.
 OpCounts count_assembly_ops(const std::vector<Subtask>& subtasks);
+std::shared_ptr<const t800::codegen::Recording> record_assembly(
+    const std::vector<Subtask>& subtasks, bool real64);
 
 // data.values (one per subtask) -> data.D, data.C, data.c, data.h.
 template <class S>

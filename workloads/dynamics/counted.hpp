@@ -1,12 +1,15 @@
-// A counting scalar: Counted<T> computes exactly what T computes (same IEEE operations, same
-// order) and counts each operation into the OpCounts of the innermost active OpTally. Kernels
-// templated on the scalar type run once with it to learn their operation mix (DESIGN.md, "How data
-// flows", step 4).
+// The instrumented scalar: Counted<T> computes exactly what T computes (same IEEE operations, same
+// order), counts each operation into the OpCounts of the innermost active OpTally, and, while a
+// t800::codegen::Recording is active on its thread, records the operation's dataflow, from which
+// the code generator compiles the kernel to T800 code. Kernels templated on the scalar type run
+// with it to learn their operation mix and their code (docs/architecture.md, "Compute costs").
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 
+#include "t800/codegen/recording.hpp"
 #include "workloads/dynamics/op_counts.hpp"
 
 namespace dynamics {
@@ -44,50 +47,135 @@ inline void tally(Field field, long n = 1) {
 template <class T>
 class Counted {
   static_assert(std::is_floating_point_v<T>, "Counted wraps float or double");
+  using NodeKind = t800::codegen::NodeKind;
+  using Recording = t800::codegen::Recording;
 
  public:
   using value_type = T;
 
   Counted() = default;
   // Implicit from T: literals and constants enter expressions without cost (their loads are counted
-  // explicitly by the kernels, see op_counts.hpp).
+  // explicitly by the kernels, see op_counts.hpp; a recording makes them constants of the code).
   Counted(T v) : v_(v) {}  // NOLINT(google-explicit-constructor)
+  // A copy is a value: reading a declared array element, it is a load of that element.
+  Counted(const Counted& o) : v_(o.v_), node_(o.value_node()), serial_(o.serial_) {}
+  // Assigning to a declared array element is a store into it (recorded); otherwise a copy.
+  Counted& operator=(const Counted& o) {
+    const int node = o.value_node();
+    v_ = o.v_;
+    Recording* r = Recording::current();
+    if (r && home_ >= 0 && serial_ == r->serial()) {
+      r->store(home_, node >= 0 ? node : r->constant(double(v_)));
+      node_ = -1;  // read again, it is loaded from the element
+    } else {
+      node_ = node;
+      home_ = -1;
+      serial_ = o.serial_;
+    }
+    return *this;
+  }
 
   T value() const { return v_; }
 
-  friend Counted operator+(Counted a, Counted b) { return count(&OpCounts::fadd, a.v_ + b.v_); }
-  friend Counted operator-(Counted a, Counted b) { return count(&OpCounts::fadd, a.v_ - b.v_); }
-  friend Counted operator*(Counted a, Counted b) { return count(&OpCounts::fmul, a.v_ * b.v_); }
-  friend Counted operator/(Counted a, Counted b) { return count(&OpCounts::fdiv, a.v_ / b.v_); }
-  // A sign change is folded into the add or subtract that consumes it (occam writes a - b).
-  friend Counted operator-(Counted a) { return Counted(-a.v_); }
+  // Makes this the element of a declared array (occam/structure.hpp, occam::declare).
+  void bind(int access) {
+    home_ = access;
+    node_ = -1;
+    serial_ = Recording::current() ? Recording::current()->serial() : 0;
+  }
+
+  friend Counted operator+(Counted a, Counted b) {
+    return count(&OpCounts::fadd, a.v_ + b.v_, NodeKind::add, a, b);
+  }
+  friend Counted operator-(Counted a, Counted b) {
+    return count(&OpCounts::fadd, a.v_ - b.v_, NodeKind::sub, a, b);
+  }
+  friend Counted operator*(Counted a, Counted b) {
+    return count(&OpCounts::fmul, a.v_ * b.v_, NodeKind::mul, a, b);
+  }
+  friend Counted operator/(Counted a, Counted b) {
+    return count(&OpCounts::fdiv, a.v_ / b.v_, NodeKind::div, a, b);
+  }
+  // A sign change is folded into the add or subtract that consumes it (occam writes a - b): not
+  // counted, and the code generator folds it the same way.
+  friend Counted operator-(Counted a) { return record(-a.v_, NodeKind::neg, a, a); }
 
   Counted& operator+=(Counted b) { return *this = *this + b; }
   Counted& operator-=(Counted b) { return *this = *this - b; }
   Counted& operator*=(Counted b) { return *this = *this * b; }
   Counted& operator/=(Counted b) { return *this = *this / b; }
 
-  friend bool operator<(Counted a, Counted b) { return compare(a.v_ < b.v_); }
-  friend bool operator>(Counted a, Counted b) { return compare(a.v_ > b.v_); }
-  friend bool operator<=(Counted a, Counted b) { return compare(a.v_ <= b.v_); }
-  friend bool operator>=(Counted a, Counted b) { return compare(a.v_ >= b.v_); }
-  friend bool operator==(Counted a, Counted b) { return compare(a.v_ == b.v_); }
-  friend bool operator!=(Counted a, Counted b) { return compare(a.v_ != b.v_); }
+  // The T800 compares with fpgt and fpeq: a < b is b > a, a <= b is NOT (a > b). A recording keeps
+  // the comparison instruction's outcome (the IF's branch).
+  friend bool operator<(Counted a, Counted b) {
+    return compare(NodeKind::greater, b, a, b.v_ > a.v_, a.v_ < b.v_);
+  }
+  friend bool operator>(Counted a, Counted b) {
+    return compare(NodeKind::greater, a, b, a.v_ > b.v_, a.v_ > b.v_);
+  }
+  friend bool operator<=(Counted a, Counted b) {
+    return compare(NodeKind::greater, a, b, a.v_ > b.v_, a.v_ <= b.v_);
+  }
+  friend bool operator>=(Counted a, Counted b) {
+    return compare(NodeKind::greater, b, a, b.v_ > a.v_, a.v_ >= b.v_);
+  }
+  friend bool operator==(Counted a, Counted b) {
+    return compare(NodeKind::equal, a, b, a.v_ == b.v_, a.v_ == b.v_);
+  }
+  friend bool operator!=(Counted a, Counted b) {
+    return compare(NodeKind::equal, a, b, a.v_ == b.v_, a.v_ != b.v_);
+  }
 
-  friend Counted sqrt(Counted a) { return count(&OpCounts::fsqrt, std::sqrt(a.v_)); }
-  friend Counted sin(Counted a) { return count(&OpCounts::fsincos, std::sin(a.v_)); }
-  friend Counted cos(Counted a) { return count(&OpCounts::fsincos, std::cos(a.v_)); }
+  friend Counted sqrt(Counted a) {
+    return count(&OpCounts::fsqrt, std::sqrt(a.v_), NodeKind::sqrt, a, a);
+  }
+  friend Counted sin(Counted a) {
+    return count(&OpCounts::fsincos, std::sin(a.v_), NodeKind::sine, a, a);
+  }
+  friend Counted cos(Counted a) {
+    return count(&OpCounts::fsincos, std::cos(a.v_), NodeKind::cosine, a, a);
+  }
+  // |a| (fpuabs): kernels count it themselves where they count integer work.
+  friend Counted fabs(Counted a) { return record(std::fabs(a.v_), NodeKind::abs, a, a); }
 
  private:
-  static Counted count(long OpCounts::*field, T result) {
-    detail::tally(field);
-    return Counted(result);
+  // The node holding this value in the active recording: its own, a load of its array element, or
+  // -1 (a literal, or a value from outside the recording: a constant of the code).
+  int value_node() const {
+    Recording* r = Recording::current();
+    if (!r || serial_ != r->serial()) return -1;
+    if (node_ >= 0) return node_;
+    return home_ >= 0 ? r->load(home_) : -1;
   }
-  static bool compare(bool result) {
+  static int operand(Recording& r, const Counted& x) {
+    return (x.node_ >= 0 && x.serial_ == r.serial()) ? x.node_ : r.constant(double(x.v_));
+  }
+  static Counted record(T result, NodeKind kind, const Counted& a, const Counted& b) {
+    Counted c(result);
+    if (Recording* r = Recording::current()) {
+      const bool unary = &a == &b;
+      c.node_ = r->operation(kind, operand(*r, a), unary ? -1 : operand(*r, b));
+      c.serial_ = r->serial();
+    }
+    return c;
+  }
+  static Counted count(long OpCounts::*field, T result, NodeKind kind, const Counted& a,
+                       const Counted& b) {
+    detail::tally(field);
+    return record(result, kind, a, b);
+  }
+  static bool compare(NodeKind kind, const Counted& a, const Counted& b, bool instruction_result,
+                      bool result) {
     detail::tally(&OpCounts::fcompare);
+    if (Recording* r = Recording::current())
+      r->test(r->operation(kind, operand(*r, a), operand(*r, b)), instruction_result);
     return result;
   }
+
   T v_ = 0;
+  int node_ = -1;           // the recorded node holding the value
+  int home_ = -1;           // a declared array element (recorded access)
+  std::uint32_t serial_ = 0;  // the recording node_ and home_ belong to
 };
 
 template <class T>

@@ -2,6 +2,8 @@
 // (worker_input.hpp).
 #pragma once
 
+#include <memory>
+
 #include "workloads/dynamics/state.hpp"
 #include "workloads/dynamics/subtask.hpp"
 #include "workloads/dynamics/terms.hpp"
@@ -47,5 +49,9 @@ S evaluate(const RobotModel& model, const Subtask& task, const State& state) {
 // is there to show it.
 OpCounts count_ops(const RobotModel& model, const Subtask& task);
 OpCounts count_ops(const RobotModel& model, const Subtask& task, const JointVector& q);
+
+// The worker's PROC for this subtask, recorded: it reads the master's message and stores its value.
+std::shared_ptr<const t800::codegen::Recording> record_subtask(const RobotModel& model,
+                                                               const Subtask& task, bool real64);
 
 }  // namespace dynamics

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
+#include <sstream>
+#include <stdexcept>
 
 #include "workloads/dynamics/evaluate.hpp"
 
@@ -59,27 +62,63 @@ bool involves(const Subtask& term, int joint) {
   return term.i == joint || term.j == joint || term.k == joint;
 }
 
-// The paper's simplified form: with the last link's axial inertia set to zero, the Coriolis terms
-// of the last joint that vanish are dropped (they are proportional to that small inertia).
-std::vector<Subtask> simplify(const RobotModel& model, const std::vector<Subtask>& full) {
+}  // namespace
+
+// With the last link's axial inertia set to zero, the Coriolis terms of the last joint that vanish
+// are dropped (they are proportional to that small inertia); their size comes from the robot as it
+// is.
+PaperSimplification paper_simplification(const RobotModel& model) {
+  const std::vector<TermMagnitude> analysis = analyse_terms(model, all_terms());
+  std::vector<TermMagnitude> present;
+  for (const TermMagnitude& m : analysis)
+    if (!m.zero) present.push_back(m);
   const int last = kJoints - 1;
   RobotModel simplified = model;
   simplified.joints[last].link.inertia.z() = 0;
   // Analysed together with all the other terms: the zero threshold is relative to each kind's
   // scale.
-  std::vector<Subtask> kept;
-  for (const TermMagnitude& m : analyse_terms(simplified, full)) {
-    const bool dropped = m.zero && m.term.kind == TermKind::coriolis && involves(m.term, last);
-    if (!dropped) kept.push_back(m.term);
+  const std::vector<TermMagnitude> without = analyse_terms(simplified, nonzero(analysis));
+  PaperSimplification p;
+  p.smallest_kept = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t < without.size(); ++t) {
+    const TermMagnitude& m = without[t];
+    const bool coriolis = m.term.kind == TermKind::coriolis;
+    if (m.zero && coriolis && involves(m.term, last)) {
+      p.dropped.push_back(m.term);
+      p.largest_dropped = std::max(p.largest_dropped, present[t].max_abs);
+      continue;
+    }
+    p.kept.push_back(m.term);
+    if (coriolis) p.smallest_kept = std::min(p.smallest_kept, present[t].max_abs);
   }
-  return kept;
+  if (std::isinf(p.smallest_kept)) p.smallest_kept = 0;
+  return p;
 }
 
-}  // namespace
+std::string PaperSimplification::refusal(const std::string& robot) const {
+  std::ostringstream out;
+  out.precision(2);
+  out << "model \"paper\" does not fit " << robot
+      << ": the paper's simplification (derived for the Stanford arm) drops the Coriolis terms of "
+         "joint "
+      << kJoints << " that vanish when link " << kJoints << "'s axial inertia Izz is zero ("
+      << dropped.size() << " terms here, up to " << std::scientific << largest_dropped
+      << "), assuming they are negligible, at most " << std::defaultfloat << kNegligible
+      << " times every Coriolis term it keeps; here the smallest kept term is only "
+      << std::scientific << smallest_kept
+      << ". Use model \"full\", every non-zero term (workload.model in a scene, --model for "
+         "`t800sim "
+         "dynamics`)";
+  return out.str();
+}
 
 std::vector<Subtask> derive_subtasks(const RobotModel& model, ModelVariant variant) {
-  const std::vector<Subtask> full = nonzero(analyse_terms(model, all_terms()));
-  return variant == ModelVariant::full ? full : simplify(model, full);
+  if (variant == ModelVariant::full) return nonzero(analyse_terms(model, all_terms()));
+  PaperSimplification p = paper_simplification(model);
+  if (!p.holds())
+    throw std::invalid_argument(
+        p.refusal(model.name.empty() ? "this robot" : "the robot '" + model.name + "'"));
+  return std::move(p.kept);
 }
 
 }  // namespace dynamics

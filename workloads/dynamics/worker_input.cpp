@@ -15,4 +15,22 @@ OpCounts count_input_ops(const RobotModel& model) {
   return tally.counts();
 }
 
+// The host's q is an array of the master's; sin and cos of each joint angle go into the message.
+std::shared_ptr<const t800::codegen::Recording> record_input(const RobotModel& model, bool real64) {
+  auto recording = std::make_shared<t800::codegen::Recording>("MASTER.INPUT", real64);
+  const t800::codegen::RecordingScope scope(*recording);
+  auto run = [&](auto scalar) {
+    using S = decltype(scalar);
+    std::array<S, kJoints> q;
+    q.fill(S(0.25));
+    occam::declare(q, "q");
+    make_worker_input(model, q);
+  };
+  if (real64)
+    run(Counted<double>());
+  else
+    run(Counted<float>());
+  return recording;
+}
+
 }  // namespace dynamics

@@ -93,10 +93,11 @@ Rows<S> augment(const Rows<S>& a, const Row<S>& b) {
   Rows<S> m = a;
   for (std::size_t i = 0; i < m.size(); ++i) {
     if (m[i].size() != a.size()) throw std::invalid_argument("elimination: A is not square");
-    m[i].push_back(b[i]);
+    m[i].emplace_back();  // the column b goes into
+    occam::declare(m[i], "row");
   }
+  for (std::size_t i : occam::seq<S>(m.size())) m[i].back() = b[i];
   const long n = static_cast<long>(a.size());
-  note_loop<S>(n);
   note_indexed<S>(2 * n);
   dynamics::note_loads<S>(n);
   dynamics::note_stores<S>(n);
@@ -109,18 +110,16 @@ template <class S>
 S matrix_scale(const Rows<S>& m) {
   S largest(0);
   const std::size_t columns = m.front().size() - 1;
-  note_loop<S>(static_cast<long>(m.size()));
-  for (const Row<S>& row : m) {
-    note_loop<S>(static_cast<long>(columns));
-    for (std::size_t j = 0; j < columns; ++j) {
-      const S v = magnitude(row[j]);
+  for (std::size_t i : occam::seq<S>(m.size())) {
+    for (std::size_t j : occam::seq<S>(columns)) {
+      const S v = magnitude(m[i][j]);
       if (v > largest) largest = v;
     }
   }
   const long elements = static_cast<long>(m.size() * columns);
   note_indexed<S>(elements);
   dynamics::note_loads<S>(elements);
-  note_tests<S>(elements);
+  note_compared<S>(elements);
   return largest;
 }
 
@@ -144,16 +143,18 @@ template <class S>
 PivotChoice first_usable_pivot(const Rows<S>& m, const PivotRule& rule, const S& limit) {
   PivotChoice choice;
   long tested = 0;
-  for (std::size_t i = 0; i < m.size() && !choice.found; ++i) {
+  for (std::size_t i : occam::seq<S>(m.size())) {
     ++tested;
     const S& lead = m[i][0];
     const bool usable = rule.threshold > 0 ? magnitude(lead) > limit : lead != S(0);
-    if (usable) choice = {true, i};
+    if (usable) {
+      choice = {true, i};
+      break;
+    }
   }
-  note_loop<S>(tested);
   note_indexed<S>(tested);
   dynamics::note_loads<S>(tested);
-  note_tests<S>(tested);
+  note_compared<S>(tested);
   return choice;
 }
 
@@ -163,7 +164,7 @@ template <class S>
 PivotChoice largest_pivot(const Rows<S>& m, const S& limit) {
   std::size_t best = 0;
   S best_magnitude = magnitude(m[0][0]);
-  for (std::size_t i = 1; i < m.size(); ++i) {
+  for (std::size_t i : occam::seq<S>(1, m.size() - 1)) {
     const S v = magnitude(m[i][0]);
     if (v > best_magnitude) {
       best = i;
@@ -171,10 +172,9 @@ PivotChoice largest_pivot(const Rows<S>& m, const S& limit) {
     }
   }
   const long rows = static_cast<long>(m.size());
-  note_loop<S>(rows - 1);
   note_indexed<S>(rows);
   dynamics::note_loads<S>(rows);
-  note_tests<S>(rows);  // rows - 1 in the loop, and the usability test below
+  note_compared<S>(rows);  // rows - 1 in the loop, and the usability test below
   return {best_magnitude > limit, best};
 }
 
@@ -202,9 +202,9 @@ template <class S>
 Row<S> normalise(const Row<S>& pivot) {
   const S p = pivot[0];
   Row<S> out(pivot.size() - 1);
-  for (std::size_t j = 1; j < pivot.size(); ++j) out[j - 1] = pivot[j] / p;
+  occam::declare(out, "out");
+  for (std::size_t j : occam::seq<S>(1, out.size())) out[j - 1] = pivot[j] / p;
   const long n = static_cast<long>(out.size());
-  note_loop<S>(n);
   note_indexed<S>(1 + 2 * n);
   dynamics::note_loads<S>(1 + 2 * n);  // p once, then row[j] and p (the FPU stack is 3 deep)
   dynamics::note_stores<S>(1 + n);
@@ -244,13 +244,13 @@ Row<S> eliminate(const Row<S>& row, const Row<S>& pivot) {
     throw std::invalid_argument("elimination: row and pivot row lengths do not match");
   const S multiplier = row[0];
   Row<S> out(pivot.size());
-  for (std::size_t j = 0; j < pivot.size(); ++j) out[j] = row[j + 1] - multiplier * pivot[j];
+  occam::declare(out, "out");
+  for (std::size_t j : occam::seq<S>(pivot.size())) out[j] = row[j + 1] - multiplier * pivot[j];
   const long n = static_cast<long>(out.size());
-  note_loop<S>(n);
   note_indexed<S>(1 + 3 * n);
   dynamics::note_loads<S>(1 + 3 * n);  // the multiplier once, then row[j], multiplier, pivot[j]
   dynamics::note_stores<S>(1 + n);
-  note_tests<S>(1);
+  note_error_check<S>();
   return out;
 }
 
@@ -277,31 +277,29 @@ S growth_bound(const S& scale, const PivotRule& rule) {
 template <class S>
 StepCheck<S> check_step(const Rows<S>& rows, const S& bound, const PivotRule& rule) {
   StepCheck<S> check;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
+  // Each row's status word (its eliminator's FPU error flag): one test per row.
+  for (std::size_t i : occam::seq<S>(rows.size())) {
+    note_tests<S>(1);
     bool clean = true;
     for (const S& x : rows[i]) clean = clean && is_finite(x);
-    if (!clean) {
+    if (!clean && check.status == Status::ok) {
       check.status = Status::non_finite;
       check.row = i;
-      break;
     }
   }
-  note_loop<S>(static_cast<long>(rows.size()));
-  note_tests<S>(static_cast<long>(rows.size()));
   if (!rule.growth_check()) return check;
   const std::size_t columns = rows.front().size() - 1;
-  note_loop<S>(static_cast<long>(rows.size()));
-  for (const Row<S>& row : rows) {
-    note_loop<S>(static_cast<long>(columns));
-    for (std::size_t j = 0; j < columns; ++j) {
-      const S v = magnitude(row[j]);
+  for (std::size_t i : occam::seq<S>(rows.size())) {
+    for (std::size_t j : occam::seq<S>(columns)) {
+      const S v = magnitude(rows[i][j]);
       if (v > check.largest) check.largest = v;
     }
   }
   const long elements = static_cast<long>(rows.size() * columns);
   note_indexed<S>(elements);
   dynamics::note_loads<S>(elements);
-  note_tests<S>(elements + 1);
+  note_compared<S>(elements);
+  note_tests<S>(1);  // the growth bound
   if (check.status == Status::ok && check.largest > bound) check.status = Status::unstable;
   return check;
 }
@@ -325,19 +323,19 @@ template <class S>
 Row<S> back_substitute(const Rows<S>& upper) {
   const std::size_t n = upper.size();
   Row<S> x(n);
-  note_loop<S>(static_cast<long>(n));
-  for (std::size_t k = n; k-- > 0;) {
+  occam::declare(x, "x");
+  for (std::size_t i : occam::seq<S>(n)) {  // k = n-1 .. 0
+    const std::size_t k = n - 1 - i;
     const Row<S>& u = upper[k];
     S sum = u.back();
-    for (std::size_t j = k + 1; j < n; ++j) sum = sum - u[j - k - 1] * x[j];
+    for (std::size_t j : occam::seq<S>(k + 1, n - 1 - k)) sum = sum - u[j - k - 1] * x[j];
     x[k] = sum;
-    note_loop<S>(static_cast<long>(n - 1 - k));
   }
   const long products = static_cast<long>(n * (n - 1) / 2);
   note_indexed<S>(2 * products + 2 * static_cast<long>(n));
   dynamics::note_loads<S>(2 * products + static_cast<long>(n));
   dynamics::note_stores<S>(static_cast<long>(n));
-  note_tests<S>(1);  // the FPU error flag, once
+  note_error_check<S>();  // the FPU error flag, once
   return x;
 }
 

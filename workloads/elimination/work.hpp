@@ -3,9 +3,10 @@
 // dynamics kernels do not have (they are straight-line code) but Gaussian elimination does: a
 // T800 `lend` costs 10 cycles, as much as a floating add, so loop control cannot be left out.
 //
-// The integer work is tallied by the kernels themselves as they run (note_loop, note_indexed, ...)
-// whenever the scalar is counted, the same way note_loads/note_stores count memory traffic. How
-// each item maps onto T800 instructions is the pipeline's business (workloads/pipeline/costs.hpp).
+// The integer work is tallied by the kernels themselves as they run (occam::seq for loops,
+// note_indexed, note_tests, ...) whenever the scalar is counted, the same way note_loads/note_stores
+// count memory traffic. How each item maps onto T800 instructions is the op-count model's business
+// (workloads/pipeline/costs.hpp); a recording compiles the kernel's own code instead.
 #pragma once
 
 #include <cmath>
@@ -13,6 +14,7 @@
 
 #include "workloads/dynamics/counted.hpp"
 #include "workloads/dynamics/op_counts.hpp"
+#include "workloads/occam/structure.hpp"
 
 namespace elimination {
 
@@ -77,7 +79,12 @@ class WorkTally {
   WorkTally(const WorkTally&) = delete;
   WorkTally& operator=(const WorkTally&) = delete;
 
-  Work work() const { return {fp_.counts(), integer_}; }
+  Work work() const {
+    IntegerWork integer = integer_;
+    integer.loops += loops_.loops();
+    integer.iterations += loops_.iterations();
+    return {fp_.counts(), integer};
+  }
   static IntegerWork* current() { return active(); }
 
  private:
@@ -86,6 +93,7 @@ class WorkTally {
     return work;
   }
   dynamics::OpTally fp_;
+  occam::LoopTally loops_;  // the replicated SEQs (occam::seq) the kernels run
   IntegerWork integer_;
   IntegerWork* outer_;
 };
@@ -99,23 +107,31 @@ void tally(long IntegerWork::*field, long n) {
 }
 }  // namespace detail
 
-// A replicated SEQ of `n` iterations.
-template <class S>
-void note_loop(long n) {
-  detail::tally<S>(&IntegerWork::loops, 1);
-  detail::tally<S>(&IntegerWork::iterations, n);
-}
 template <class S>
 void note_indexed(long n) {
   detail::tally<S>(&IntegerWork::indexed, n);
 }
+// IFs on integer conditions (a status word, a flag): counted, and recorded as integer tests.
 template <class S>
 void note_tests(long n) {
   detail::tally<S>(&IntegerWork::tests, n);
+  occam::integer<S>(t800::codegen::IntegerStatement::test, n);
+}
+// IFs whose condition is a REAL comparison: counted here; the comparison records itself.
+template <class S>
+void note_compared(long n) {
+  detail::tally<S>(&IntegerWork::tests, n);
+}
+// The FPU's error flag tested once (a status word for level 3, or q-dot's check).
+template <class S>
+void note_error_check() {
+  detail::tally<S>(&IntegerWork::tests, 1);
+  occam::integer<S>(t800::codegen::IntegerStatement::error_check, 1);
 }
 template <class S>
 void note_moves(long n) {
   detail::tally<S>(&IntegerWork::moves, n);
+  occam::integer<S>(t800::codegen::IntegerStatement::move, n);
 }
 
 // |x| for plain and counted scalars; counted as one fpuabs.
@@ -123,7 +139,7 @@ template <class S>
 S magnitude(const S& x) {
   detail::tally<S>(&IntegerWork::abs, 1);
   if constexpr (dynamics::is_counted_v<S>) {
-    return S(std::fabs(x.value()));
+    return fabs(x);
   } else {
     return std::fabs(x);
   }

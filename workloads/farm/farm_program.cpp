@@ -36,44 +36,58 @@ std::vector<dynamics::Subtask> FarmProgram<S>::subtasks() const {
 }
 
 template <class S>
-void FarmProgram<S>::build(network::Machine& m) {
-  work_ = farm_work(model_, settings_.variant, m.cost_model(master_));
+void FarmProgram<S>::build(network::Machine& m, const std::string& master_process) {
+  work_ = farm_work(model_, settings_.variant, m.compute_model(workers_.front()), sizeof(S) == 8);
   if (settings_.schedule != "on-demand") allocation_ = allocate(m);
   for (int w : workers_) {
     to_.push_back(&m.channel("to " + m.node_name(w), master_, w));
     from_.push_back(&m.channel("from " + m.node_name(w), w, master_));
     queue_.push_back(&m.channel("queue " + m.node_name(w), w, w));
   }
-  for (std::size_t w = 0; w < workers_.size(); ++w)
-    if (has_work(w))
-      m.spawn(workers_[w], "worker", t800::Priority::low, [this, w](network::Process& p) { worker(p, w); });
+  for (std::size_t w = 0; w < workers_.size(); ++w) {
+    if (!has_work(w)) continue;
+    m.spawn(workers_[w], "worker", t800::Priority::low,
+            [this, w](network::Process& p) { worker(p, w); });
+    // The worker's code: its subtasks' PROCs (on demand it may get any of them).
+    if (settings_.schedule == "on-demand")
+      for (const FarmTask& t : work_.tasks) m.declare_code(workers_[w], "worker", t.work.code);
+    else
+      for (int t : allocation_[w])
+        m.declare_code(workers_[w], "worker", work_.tasks[std::size_t(t)].work.code);
+  }
+  m.declare_code(master_, master_process, work_.master_input.code);
+  m.declare_code(master_, master_process, work_.master_assembly.code);
 }
 
-// The list scheduler's view of each worker: its distance from the master in hops sets when its input
-// arrives and what each returned value costs (schedule.hpp).
+// The list scheduler's view of each worker: its distance from the master in hops sets when its
+// input arrives and what each returned value costs (schedule.hpp).
 template <class S>
 Allocation FarmProgram<S>::allocate(const network::Machine& m) const {
   std::vector<std::string> task_names, worker_names;
   for (const FarmTask& t : work_.tasks) task_names.push_back(t.subtask.name);
   for (int w : workers_) worker_names.push_back(m.node_name(w));
-  if (settings_.schedule == "explicit") return parse_allocation(settings_.allocation, task_names, worker_names);
+  if (settings_.schedule == "explicit")
+    return parse_allocation(settings_.allocation, task_names, worker_names);
 
-  const double cycle_ns = m.cost_model(master_).cycle_ns();
+  const double cycle_ns = m.compute_model(master_).cycle_ns();
   const t800::LinkTiming link(m.options().link);
-  const double hop_overhead = t800::timing::kCommFixed * cycle_ns;
+  const double hop_overhead =
+      double(m.compute_model(master_).communication_cycles(0, false)) * cycle_ns;
   const std::int64_t input_bytes = dynamics::worker_input_reals(model_) * kReal;
   std::vector<double> task_ns;
   for (const FarmTask& t : work_.tasks) task_ns.push_back(double(t.cycles) * cycle_ns);
   std::vector<WorkerCosts> costs;
   for (int w : workers_) {
     const double hops = double(m.topology().shortest_path(master_, w).size() - 1);
-    costs.push_back({hops * (link.arrival_ns(input_bytes) + hop_overhead), hops * kReal * link.byte_period_ns,
+    costs.push_back({hops * (link.arrival_ns(input_bytes) + hop_overhead),
+                     hops * kReal * link.byte_period_ns,
                      hops * (link.data_packet_ns + hop_overhead)});
   }
   return schedule_static(task_ns, costs);
 }
 
-// A static schedule may leave a worker without subtasks (more workers than subtasks): it is not started.
+// A static schedule may leave a worker without subtasks (more workers than subtasks): it is not
+// started.
 template <class S>
 bool FarmProgram<S>::has_work(std::size_t w) const {
   return settings_.schedule == "on-demand" || !allocation_[w].empty();
@@ -88,7 +102,8 @@ std::vector<double> FarmProgram<S>::workers_busy_now(network::Machine& m) const 
 
 template <class S>
 FarmRound FarmProgram<S>::evaluate(network::Process& p, const dynamics::JointVector& q,
-                                   const dynamics::JointVector& qd, dynamics::DynamicsData<S>& data) {
+                                   const dynamics::JointVector& qd,
+                                   dynamics::DynamicsData<S>& data) {
   FarmRound round;
   round.start_us = p.now_us();
   p.compute(work_.master_input, "sin/cos");
@@ -117,7 +132,8 @@ FarmRound FarmProgram<S>::evaluate(network::Process& p, const dynamics::JointVec
   p.par(talk);
   round.farm_end_us = p.now_us();
   const std::vector<double> busy_after = workers_busy_now(p.machine());
-  for (std::size_t w = 0; w < workers_.size(); ++w) round.busy_in_farm_us.push_back(busy_after[w] - busy_before[w]);
+  for (std::size_t w = 0; w < workers_.size(); ++w)
+    round.busy_in_farm_us.push_back(busy_after[w] - busy_before[w]);
   p.compute(work_.master_assembly, "assemble");
   if (!settings_.skip_numerics) dynamics::assemble(subtasks(), qd, data);
   round.end_us = p.now_us();
@@ -143,8 +159,9 @@ void FarmProgram<S>::collect(network::Process& p, std::size_t w, dynamics::Dynam
   done_by_[w] = allocation_[w];
 }
 
-// On demand: each worker holds up to `buffer` subtasks; every result returned earns it the next one, longest
-// first. When none is left it gets an end-of-round marker, and the master waits for what it still has out.
+// On demand: each worker holds up to `buffer` subtasks; every result returned earns it the next
+// one, longest first. When none is left it gets an end-of-round marker, and the master waits for
+// what it still has out.
 template <class S>
 void FarmProgram<S>::hand_out(network::Process& p, std::size_t w, dynamics::DynamicsData<S>& data) {
   int outstanding = 0;
@@ -172,7 +189,8 @@ void FarmProgram<S>::hand_out(network::Process& p, std::size_t w, dynamics::Dyna
 template <class S>
 void FarmProgram<S>::worker(network::Process& p, std::size_t w) {
   for (;;) {
-    const auto input = std::any_cast<std::optional<dynamics::WorkerInput<S>>>(p.in(*to_[w]).payload);
+    const auto input =
+        std::any_cast<std::optional<dynamics::WorkerInput<S>>>(p.in(*to_[w]).payload);
     if (!input) return;
     if (settings_.schedule == "on-demand")
       on_demand_round(p, w, *input);
@@ -182,16 +200,18 @@ void FarmProgram<S>::worker(network::Process& p, std::size_t w) {
 }
 
 template <class S>
-void FarmProgram<S>::static_round(network::Process& p, std::size_t w, const dynamics::WorkerInput<S>& input) {
+void FarmProgram<S>::static_round(network::Process& p, std::size_t w,
+                                  const dynamics::WorkerInput<S>& input) {
   std::vector<S> values;
   for (int t : allocation_[w]) values.push_back(run_task(p, t, input));
   p.out(*from_[w], {std::int64_t(values.size()) * kReal, values, "results"});
 }
 
-// A feeder takes assignments off the link while a computer works through them, so the next subtask is
-// already on the worker when the current one ends (the buffering that keeps links busy).
+// A feeder takes assignments off the link while a computer works through them, so the next subtask
+// is already on the worker when the current one ends (the buffering that keeps links busy).
 template <class S>
-void FarmProgram<S>::on_demand_round(network::Process& p, std::size_t w, const dynamics::WorkerInput<S>& input) {
+void FarmProgram<S>::on_demand_round(network::Process& p, std::size_t w,
+                                     const dynamics::WorkerInput<S>& input) {
   network::Channel& queue = *queue_[w];
   p.par({[this, w, &queue](network::Process& feeder) {
            for (;;) {
@@ -213,7 +233,7 @@ void FarmProgram<S>::on_demand_round(network::Process& p, std::size_t w, const d
 template <class S>
 S FarmProgram<S>::run_task(network::Process& p, int t, const dynamics::WorkerInput<S>& input) {
   const FarmTask& task = work_.tasks[t];
-  p.compute(task.mix, task.subtask.name);  // the cost counted at build time, not by evaluating
+  p.compute(task.work, task.subtask.name);  // the cost known at build time, not by evaluating
   if (settings_.skip_numerics) return S(0);
   return dynamics::evaluate_subtask<S>(model_, task.subtask, input);
 }

@@ -43,8 +43,9 @@ class FarmProgram {
  public:
   FarmProgram(const dynamics::RobotModel& model, FarmSettings settings, int master, std::vector<int> workers);
 
-  // Before the run: works out the costs and the allocation, declares the channels, places the workers.
-  void build(network::Machine& m);
+  // Before the run: works out the costs and the allocation, declares the channels, places the
+  // workers, declares the master's code as that of its process `master_process`.
+  void build(network::Machine& m, const std::string& master_process = "master");
   // Called from the master's process: one evaluation at (q, qd) into `data`.
   FarmRound evaluate(network::Process& master, const dynamics::JointVector& q, const dynamics::JointVector& qd,
                      dynamics::DynamicsData<S>& data);

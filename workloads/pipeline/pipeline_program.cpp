@@ -13,6 +13,7 @@
 #include <systemc>
 
 #include "workloads/pipeline/costs.hpp"
+#include "workloads/pipeline/piece_code.hpp"
 #include "workloads/pipeline/relay.hpp"
 
 namespace workloads {
@@ -44,21 +45,6 @@ int require_node(const network::Topology& t, const std::string& name, const std:
                                           name + " (" + role +
                                           "); use configs/topologies/elimination-m<m>.toml");
   return index;
-}
-
-// Runs a piece of numerical work, then charges its counted cost to the process's CPU. The tally
-// ends before compute() lets the simulation switch to other processes.
-template <class F>
-auto run_piece(Process& p, const char* label, F&& f) {
-  elimination::Work work;
-  auto result = [&] {
-    elimination::WorkTally tally;
-    auto r = f();
-    work = tally.work();
-    return r;
-  }();
-  p.compute(to_operation_mix(work), label);
-  return result;
 }
 
 // Memory shared by the PAR branches of one level (L1's, L3's rows): a branch that needs a row
@@ -151,6 +137,62 @@ class PipelineProgram<T>::Levels {
       });
     machine.spawn(nodes.l3, "level3", low, [this](Process& p) { loop(p, &Levels::level3); });
     machine.spawn(nodes.l4, "level4", low, [this](Process& p) { loop(p, &Levels::level4); });
+    declare_code(machine);
+  }
+
+  // Each level's code, for the footprints of its processors: its pieces recorded on a
+  // representative system of this size (diagonally dominant: no interchange), as the levels run
+  // them.
+  void declare_code(network::Machine& machine) {
+    elimination::LinearSystem<C> s;
+    for (int i = 0; i < n(); ++i) {
+      s.a.emplace_back(std::size_t(n()), C(1));
+      s.a.back()[std::size_t(i)] = C(T(n() + 1));
+      s.b.push_back(C(1));
+    }
+    const auto& rule = settings.rule;
+    auto declare = [&](int node, const char* process, const t800::ComputeWork& work) {
+      machine.declare_code(node, process, work.code);
+    };
+    auto [m, augment] = pieces_.run(
+        "augment", [](auto& a, auto& b) { return elimination::augment(a, b); },
+        named("A", s.a), named("b", s.b));
+    declare(nodes.l1, "level1", augment);
+    C scale(0);
+    if (rule.needs_scale()) {
+      auto [value, cost] = pieces_.run(
+          "scale", [](auto& a) { return elimination::matrix_scale(a); }, named("m", m));
+      scale = value;
+      declare(nodes.l1, "level1", cost);
+    }
+    auto [limit, limit_cost] = pieces_.run(
+        "limit", [&](auto& x) { return elimination::pivot_limit(x, rule); }, named("scale", scale));
+    declare(nodes.l1, "level1", limit_cost);
+    std::vector<int> order(static_cast<std::size_t>(n()));
+    std::iota(order.begin(), order.end(), 0);
+    auto [step, pivot] = pieces_.run(
+        "pivot",
+        [&](auto& rows, auto& o, auto& l) { return elimination::pivot_step(rows, o, rule, l); },
+        named("m", m), named("order", order), named("limit", limit));
+    declare(nodes.l1, "level1", pivot);
+    auto [row, eliminate] = pieces_.run(
+        "eliminate", [](auto& r, auto& j1) { return elimination::eliminate(r, j1); },
+        named("row", m[1]), named("pivot", step.normalised));
+    for (int e : nodes.e) declare(e, "level2", eliminate);
+    Rows<C> rows(std::size_t(n() - 1), row);
+    C bound = elimination::growth_bound(scale, rule);
+    auto [check, check_cost] = pieces_.run(
+        "check", [&](auto& r, auto& b) { return elimination::check_step(r, b, rule); },
+        named("rows", rows), named("bound", bound));
+    declare(nodes.l3, "level3", check_cost);
+    Rows<C> upper;
+    for (int k = 0; k < n(); ++k) upper.emplace_back(std::size_t(n() - k), C(T(0.5)));
+    auto [x, back] = pieces_.run(
+        "back substitution", [](auto& u) { return elimination::back_substitute(u); },
+        named("U", upper));
+    declare(nodes.l4, "level4", back);
+    (void)check;
+    (void)x;
   }
 
   // ---- the client's side ----
@@ -184,6 +226,16 @@ class PipelineProgram<T>::Levels {
   PipelineNodes nodes;
 
  private:
+  // Runs a piece of numerical work, then charges its cost to the process's CPU (after the work is
+  // tallied: compute() lets the simulation switch to other processes).
+  template <class Kernel, class... Inputs>
+  auto run_piece(Process& p, const char* label, Kernel kernel, Named<Inputs>... inputs) {
+    auto [result, cost] = pieces_.run(label, kernel, inputs...);
+    p.compute(cost, label);
+    return std::move(result);
+  }
+  PieceCode<T> pieces_;
+
   std::int64_t reals(std::size_t count) const {
     return kHeaderBytes + real_bytes(settings.precision) * static_cast<std::int64_t>(count);
   }
@@ -279,11 +331,15 @@ class PipelineProgram<T>::Levels {
     input_scale_ = elimination::largest_magnitude(elimination::augment(system.a, system.b));
     outcome.start_us = p.now_us();
     const auto& rule = settings.rule;
-    Rows<C> m = run_piece(p, "augment", [&] { return elimination::augment(system.a, system.b); });
-    const C scale = rule.needs_scale()
-                        ? run_piece(p, "scale", [&] { return elimination::matrix_scale(m); })
-                        : C(0);
-    const C limit = run_piece(p, "limit", [&] { return elimination::pivot_limit(scale, rule); });
+    Rows<C> m = run_piece(
+        p, "augment", [](auto& a, auto& b) { return elimination::augment(a, b); },
+        named("A", system.a), named("b", system.b));
+    const C scale =
+        rule.needs_scale()
+            ? run_piece(p, "scale", [](auto& a) { return elimination::matrix_scale(a); }, named("m", m))
+            : C(0);
+    const C limit = run_piece(
+        p, "limit", [&](auto& s) { return elimination::pivot_limit(s, rule); }, named("scale", scale));
     if (!settings.overlap) return steps(p, std::move(m), scale, limit);
     // Overlap: a receiver stores the rows L3 streams back while the steps go on.
     bool go = true;
@@ -308,8 +364,12 @@ class PipelineProgram<T>::Levels {
       Rows<C>& m = matrices_[std::size_t(k)];
       if (k > 0 && !next_matrix(p, k, limit)) return stop_level1(p, k);
       outcome.step_start_us.push_back(p.now_us());
-      auto step =
-          run_piece(p, "pivot", [&] { return elimination::pivot_step(m, order, rule, limit); });
+      auto step = run_piece(
+          p, "pivot",
+          [&](auto& rows, auto& rows_order, auto& l) {
+            return elimination::pivot_step(rows, rows_order, rule, l);
+          },
+          named("m", m), named("order", order), named("limit", limit));
       if (!step.found) {
         fail(k, elimination::pivot_failure(m),
              "level 1: no usable pivot at step " + std::to_string(k));
@@ -459,8 +519,9 @@ class PipelineProgram<T>::Levels {
       for (std::size_t r = 0; r < rows.size(); ++r) {
         t800::Message message = (r == 0 && e == 0) ? std::move(first[0]) : p.in(in);
         const auto& row = std::any_cast<const RowMessage&>(message.payload);
-        Row<C> done = run_piece(p, "eliminate",
-                                [&] { return elimination::eliminate(row.values, pivot.row); });
+        Row<C> done = run_piece(
+            p, "eliminate", [](auto& r, auto& j1) { return elimination::eliminate(r, j1); },
+            named("row", row.values), named("pivot", pivot.row));
         p.out(out, {reals(done.size()), RowMessage{row.index, std::move(done)}, "row"});
         note_level2(p.now_us(), false);
       }
@@ -498,8 +559,9 @@ class PipelineProgram<T>::Levels {
           ++started;
           buffer.notify();
           const auto& row = std::any_cast<const RowMessage&>(taken[r].payload);
-          Row<C> values = run_piece(q, "eliminate",
-                                    [&] { return elimination::eliminate(row.values, pivot.row); });
+          Row<C> values = run_piece(
+              q, "eliminate", [](auto& r, auto& j1) { return elimination::eliminate(r, j1); },
+              named("row", row.values), named("pivot", pivot.row));
           buffer.wait_until(q, [&] { return sent >= r; });
           done[r] = RowMessage{row.index, std::move(values)};
           ++finished;
@@ -543,8 +605,9 @@ class PipelineProgram<T>::Levels {
         return false;
       }
       if (k == 0 && settings.rule.growth_check())
-        bound = run_piece(p, "bound",
-                          [&] { return elimination::growth_bound(pivot.scale, settings.rule); });
+        bound = run_piece(
+            p, "bound", [&](auto& s) { return elimination::growth_bound(s, settings.rule); },
+            named("scale", pivot.scale));
       const std::size_t r = static_cast<std::size_t>(n() - 1 - k);
       if (settings.overlap) {
         stream(p, k, pivot, bound, unstable);
@@ -554,7 +617,9 @@ class PipelineProgram<T>::Levels {
       collect(p, k, pivot, unstable, rows);
       if (r == 0) continue;
       const auto check = run_piece(
-          p, "check", [&] { return elimination::check_step(rows, bound, settings.rule); });
+          p, "check",
+          [&](auto& r, auto& b) { return elimination::check_step(r, b, settings.rule); },
+          named("rows", rows), named("bound", bound));
       largest_ = std::max(largest_, elimination::largest_magnitude(rows));  // diagnostic only
       if (check.status == Status::non_finite) {
         fail(k, Status::non_finite,
@@ -634,7 +699,10 @@ class PipelineProgram<T>::Levels {
   void forward(Process& p, int k, Row<C>& row, std::size_t i, C bound, bool& unstable) {
     const Rows<C> one{row};
     const auto check =
-        run_piece(p, "check", [&] { return elimination::check_step(one, bound, settings.rule); });
+        run_piece(
+            p, "check",
+            [&](auto& r, auto& b) { return elimination::check_step(r, b, settings.rule); },
+            named("rows", one), named("bound", bound));
     largest_ = std::max(largest_, elimination::largest_magnitude(one));  // diagnostic only
     if (check.status == Status::non_finite)
       fail(k, Status::non_finite,
@@ -664,7 +732,8 @@ class PipelineProgram<T>::Levels {
     }
     outcome.eliminated_us = p.now_us();
     const Row<C> x =
-        run_piece(p, "back substitution", [&] { return elimination::back_substitute(upper); });
+        run_piece(p, "back substitution",
+                  [](auto& u) { return elimination::back_substitute(u); }, named("U", upper));
     outcome.end_us = p.now_us();
     record(x, unstable);
     if (reply_) p.out(*reply_, {reals(outcome.qdd.size()), outcome.qdd, "qdd"});

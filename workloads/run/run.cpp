@@ -1,6 +1,9 @@
 #include "workloads/run/run.hpp"
 
+#include <algorithm>
 #include <chrono>
+
+#include "network/families.hpp"
 
 #include "workloads/run/workload.hpp"
 
@@ -8,12 +11,32 @@ namespace workloads {
 
 namespace {
 
+FootprintReport footprint(const t800::MemoryMap& map) {
+  using Kind = t800::MemoryRegion::Kind;
+  FootprintReport f;
+  f.on_chip_bytes = map.on_chip_bytes();
+  f.reserved_bytes = map.bytes(Kind::reserved);
+  f.workspace_bytes = map.bytes(Kind::workspace);
+  f.data_bytes = map.bytes(Kind::data);
+  f.code_bytes = map.bytes(Kind::code);
+  f.library_bytes = map.bytes(Kind::library);
+  for (const t800::MemoryRegion& r : map.regions())
+    if (r.external) {
+      f.external_bytes += r.bytes;
+      f.off_chip.push_back(r.name);
+    }
+  f.external_access_cycles = map.external_cycles();
+  return f;
+}
+
 std::vector<ProcessorReport> processor_reports(const network::Machine& m, double total_us) {
   std::vector<ProcessorReport> out;
   for (int i = 0; i < m.processors(); ++i) {
     const t800::ProcessorActivity& a = m.transputer(i).activity();
     ProcessorReport r;
     r.name = m.node_name(i);
+    r.type = std::string(m.compute_model(i).processor().name);
+    r.memory = footprint(m.compute_model(i).memory());
     r.compute_us = a.compute_us();
     r.communicate_us = a.communicate_us();
     r.busy_us = a.busy_us();
@@ -30,7 +53,8 @@ std::vector<LinkReport> link_reports(const network::Machine& m, double total_us)
     for (int d = 0; d < 2; ++d) {
       const t800::LinkActivity& a = info.link->activity(d);
       LinkReport r;
-      r.name = m.node_name(info.node[d]) + "->" + m.node_name(info.node[1 - d]) + " (" + info.name + ")";
+      r.name =
+          m.node_name(info.node[d]) + "->" + m.node_name(info.node[1 - d]) + " (" + info.name + ")";
       r.bytes = a.bytes();
       r.messages = a.messages();
       r.busy_us = a.busy_us();
@@ -63,17 +87,58 @@ std::string failure_of(const ResultValue& results) {
   return at.empty() ? "" : "workload." + at + " is not a finite number (NaN or infinite)";
 }
 
+RunSetting setting_of(const RunInputs& in) {
+  RunSetting s;
+  s.kind = in.kind;
+  s.precision = in.options.precision;
+  s.precision_source = in.precision_source;
+  s.network_source = in.topology.source;
+  if (const auto family = network::family_of(in.topology))
+    s.network_family = std::string(network::to_string(*family));
+  for (const network::ProcessorSpec& p : in.topology.processors) {
+    const std::string type(t800::to_string(p.config.type));
+    if (std::find(s.processor_types.begin(), s.processor_types.end(), type) ==
+        s.processor_types.end())
+      s.processor_types.push_back(type);
+  }
+  return s;
+}
+
+ResultValue setting_value(const RunSetting& s) {
+  ResultValue v;
+  v.set("kind", s.kind);
+  ResultValue precision;
+  precision.set("value", std::string(t800::to_string(s.precision)));
+  precision.set("source", s.precision_source);
+  v.set("precision", precision);
+  ResultValue net;
+  net.set("source", s.network_source);
+  net.set("family", s.network_family);
+  ResultValue types = ResultValue::list();
+  for (const std::string& t : s.processor_types) types.push(t);
+  net.set("processor_types", types);
+  v.set("network", net);
+  return v;
+}
+
 }  // namespace
+
+std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& in) {
+  std::unique_ptr<Workload> workload =
+      make_workload(in.kind, WorkloadContext{in.params, in.topology, in.robot.get()});
+  workload->build(machine);
+  return workload;
+}
 
 RunReport run(const RunInputs& in) {
   const auto start = std::chrono::steady_clock::now();
   network::Machine machine(in.topology, in.options);
-  std::unique_ptr<Workload> workload =
-      make_workload(in.kind, WorkloadContext{in.params, in.topology, in.robot.get()});
-  workload->build(machine);
+  std::unique_ptr<Workload> workload = build_workload(machine, in);
   RunReport report;
   report.name = in.name;
+  report.setting = setting_of(in);
   report.fidelity = in.options.fidelity;
+  report.run_time_checks = in.options.checked;
   report.blocked = machine.run();
   report.wait_cycle = machine.wait_cycle();
   report.limit = machine.limit_reached();
@@ -96,12 +161,17 @@ ResultValue RunReport::to_value() const {
   v.set("simulated_us", simulated_us);
   v.set("wall_s", wall_s);
   v.set("events", std::int64_t(events));
+  v.set("setting", setting_value(setting));
   ResultValue f;
   f.set("links", std::string(t800::to_string(fidelity.links)));
   f.set("compute", std::string(t800::to_string(fidelity.compute)));
+  f.set("compute_cost", std::string(t800::to_string(fidelity.compute_cost)));
   f.set("skip_numerics", fidelity.skip_numerics);
   f.set("reuse_steps", fidelity.reuse_steps);
   v.set("fidelity", f);
+  ResultValue compiler;
+  compiler.set("run_time_checks", run_time_checks);
+  v.set("compiler", compiler);
   ResultValue procs = ResultValue::list();
   for (const ProcessorReport& p : processors) {
     ResultValue r;
@@ -111,6 +181,20 @@ ResultValue RunReport::to_value() const {
     r.set("communicate_us", p.communicate_us);
     r.set("idle_us", p.idle_us);
     r.set("utilisation", p.utilisation);
+    r.set("type", p.type);
+    ResultValue mem;
+    mem.set("on_chip_bytes", std::int64_t(p.memory.on_chip_bytes));
+    mem.set("reserved_bytes", std::int64_t(p.memory.reserved_bytes));
+    mem.set("workspace_bytes", std::int64_t(p.memory.workspace_bytes));
+    mem.set("data_bytes", std::int64_t(p.memory.data_bytes));
+    mem.set("code_bytes", std::int64_t(p.memory.code_bytes));
+    mem.set("library_bytes", std::int64_t(p.memory.library_bytes));
+    mem.set("external_bytes", std::int64_t(p.memory.external_bytes));
+    ResultValue off = ResultValue::list();
+    for (const std::string& name : p.memory.off_chip) off.push(ResultValue(name));
+    mem.set("off_chip", off);
+    mem.set("external_access_cycles", std::int64_t(p.memory.external_access_cycles));
+    r.set("memory", mem);
     procs.push(r);
   }
   v.set("processors", procs);

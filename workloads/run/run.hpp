@@ -1,4 +1,5 @@
-// One simulation from plain inputs to a report: elaborate the machine, build the workload, run, account.
+// One simulation from plain inputs to a report: elaborate the machine, build the workload, run,
+// account.
 #pragma once
 
 #include <memory>
@@ -19,17 +20,42 @@ struct RunInputs {
   std::string kind;
   Params params;
   std::shared_ptr<const dynamics::RobotModel> robot;  // for workloads with a `robot` parameter
+  // Where options.precision came from, said in the report: a default is stated, never silent.
+  std::string precision_source = "the simulator's default";
+};
+
+// What ran, on what: every report states it, defaults included.
+struct RunSetting {
+  std::string kind;  // workload.kind
+  t800::Precision precision = t800::Precision::real64;
+  std::string precision_source;
+  std::string network_source;  // a topology file, "family:tree(9)", or the scene of an inline table
+  std::string
+      network_family;  // the family the network is link for link (network::family_of), or ""
+  std::vector<std::string> processor_types;  // distinct, in processor order
+};
+
+// What lives where in a processor's memory (t800/memory_map.hpp).
+struct FootprintReport {
+  int on_chip_bytes = 0;
+  int reserved_bytes = 0, workspace_bytes = 0, data_bytes = 0, code_bytes = 0, library_bytes = 0;
+  int external_bytes = 0;               // of those, in external memory
+  std::vector<std::string> off_chip;    // the regions placed in external memory
+  int external_access_cycles = 0;       // an external access, wait states included
 };
 
 struct ProcessorReport {
   std::string name;
+  std::string type;  // "T800-20"
   double busy_us = 0, compute_us = 0, communicate_us = 0, idle_us = 0, utilisation = 0;
+  FootprintReport memory;
 };
 
 struct LinkReport {
   std::string name;  // "P0.link1->P1.link0": the direction whose data it is
   std::int64_t bytes = 0, messages = 0;
-  double busy_us = 0, utilisation = 0;  // time its wire carries packets (its data, the reverse acknowledges)
+  double busy_us = 0,
+         utilisation = 0;  // time its wire carries packets (its data, the reverse acknowledges)
 };
 
 // One timeline of a trace: a processor's non-idle intervals (state compute or communicate, label
@@ -46,7 +72,9 @@ struct RunReport {
   std::string name;
   double simulated_us = 0;
   double wall_s = 0;
+  RunSetting setting;
   network::Fidelity fidelity;  // what the run modelled and skipped
+  bool run_time_checks = true;  // compiled into the generated code
   std::uint64_t events = 0;  // SystemC delta cycles: one per batch of process activations at one time
   std::vector<ProcessorReport> processors;
   std::vector<LinkReport> links;
@@ -57,12 +85,18 @@ struct RunReport {
   // without a usable pivot) or a number came out NaN or infinite (REAL32 overflow). Says which.
   std::string failure;
   ResultValue workload;
-  std::vector<TraceTrack> tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)
+  std::vector<TraceTrack>
+      tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)
 
   ResultValue to_value() const;
 };
 
 // Runs one simulation. Only one per OS process (SystemC cannot be restarted).
 RunReport run(const RunInputs& inputs);
+
+class Workload;
+// What run() does before running: the workload of `inputs` built on `machine` (its processes placed,
+// its code declared). Kept alive while the machine is used.
+std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& inputs);
 
 }  // namespace workloads

@@ -8,6 +8,7 @@
 
 #include "workloads/farm/dynamics_farm.hpp"
 #include "workloads/links/link_workloads.hpp"
+#include "workloads/livermore/livermore_workload.hpp"
 #include "workloads/pipeline/pipeline.hpp"
 #include "workloads/trajectory/trajectory.hpp"
 
@@ -23,6 +24,7 @@ const std::map<std::string, Factory>& factories() {
       {"dynamics-farm", make_dynamics_farm},
       {"elimination", make_elimination},
       {"trajectory", make_trajectory},
+      {"livermore7", make_livermore7},
   };
   return f;
 }

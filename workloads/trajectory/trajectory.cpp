@@ -181,7 +181,10 @@ class Trajectory : public Workload {
   void build(network::Machine& m) override {
     farm_.build(m);  // never skips numerics: a trajectory integrates its numbers
     pipeline_.build(m, master_, Serve::until_finish);
-    integrator_mix_ = to_operation_mix(integrator_ops());
+    integrator_ = {to_operation_mix(integrator_ops()), record_integrator()};
+    rhs_ = right_hand_side_work();
+    m.declare_code(master_, "master", integrator_.code);
+    m.declare_code(master_, "master", rhs_.code);
     progress_ = m.options().progress;
     subtasks_ = farm_.subtasks();
     skip_numerics_asked_ = m.options().fidelity.skip_numerics;
@@ -204,6 +207,48 @@ class Trajectory : public Workload {
   ResultValue results(const network::Machine&) const override;
 
  private:
+  // The master's PROC for one integration step, recorded: the state's arrays in, the next state's
+  // out (the evaluations of f are the farm's and the pipeline's, not this PROC's).
+  std::shared_ptr<const t800::codegen::Recording> record_integrator() const {
+    auto recording = std::make_shared<t800::codegen::Recording>("INTEGRATE", sizeof(S) == 8);
+    const t800::codegen::RecordingScope scope(*recording);
+    integration::State<C> x, next;
+    occam::declare(x.q.data(), dynamics::kJoints, "q");
+    occam::declare(x.qd.data(), dynamics::kJoints, "qdot");
+    occam::declare(next.q.data(), dynamics::kJoints, "q.next");
+    occam::declare(next.qd.data(), dynamics::kJoints, "qdot.next");
+    const dynamics::JointVectorT<C> zero = dynamics::JointVectorT<C>::Zero();
+    const integration::State<C> result =
+        integration::step(s_.method, x, C(S(s_.dt)), [&](const auto&, const auto&) { return zero; });
+    for (int i = 0; i < dynamics::kJoints; ++i) {
+      next.q(i) = result.q(i);
+      next.qd(i) = result.qd(i);
+    }
+    return recording;
+  }
+
+  // tau (the PD law, or a table's value) and tau - c - h, the system's right-hand side: the same
+  // operations at every evaluation, counted and recorded once.
+  t800::ComputeWork right_hand_side_work() const {
+    auto recording = std::make_shared<t800::codegen::Recording>("RIGHT.HAND.SIDE", sizeof(S) == 8);
+    dynamics::OpTally tally;
+    const t800::codegen::RecordingScope scope(*recording);
+    dynamics::JointVectorT<C> q, qd, tau, c, h, rhs;
+    for (auto* v : {&q, &qd, &tau, &c, &h, &rhs}) v->setConstant(C(S(0.25)));
+    occam::declare(q.data(), dynamics::kJoints, "q");
+    occam::declare(qd.data(), dynamics::kJoints, "qdot");
+    occam::declare(c.data(), dynamics::kJoints, "c");
+    occam::declare(h.data(), dynamics::kJoints, "h");
+    occam::declare(tau.data(), dynamics::kJoints, "tau");
+    occam::declare(rhs.data(), dynamics::kJoints, "rhs");
+    if (s_.torque == "pd") {
+      const dynamics::JointVectorT<C> law = integration::pd_torque<C>(s_.pd, q, qd);
+      for (int i = 0; i < dynamics::kJoints; ++i) tau(i) = law(i);
+    }
+    for (int i = 0; i < dynamics::kJoints; ++i) rhs(i) = tau(i) - c(i) - h(i);
+    return {to_operation_mix(tally.counts()), recording};
+  }
+
   // The integrator's arithmetic does not depend on the data: count one step with an f that costs
   // nothing.
   dynamics::OpCounts integrator_ops() const {
@@ -364,7 +409,7 @@ class Trajectory : public Workload {
     };
     const integration::State<S> next = integration::step(s_.method, x, S(s_.dt), f);
     const sc_core::sc_time before = sc_core::sc_time_stamp();
-    p.compute(integrator_mix_, "integrate");
+    p.compute(integrator_, "integrate");
     times.integration_us += us_between(before, sc_core::sc_time_stamp());
     times.step_us = us_between(start, sc_core::sc_time_stamp());
     times.communication_us =
@@ -377,18 +422,12 @@ class Trajectory : public Workload {
     const sc_core::sc_time round_start = sc_core::sc_time_stamp();
     farm_.evaluate(p, wide(q), wide(qd), data_);
     times.dynamics_us += us_between(round_start, sc_core::sc_time_stamp());
-    dynamics::OpCounts ops;
     Vec rhs;
-    {
-      dynamics::OpTally tally;  // τ and τ − c − h; ends before compute() lets others run
-      const dynamics::JointVectorT<C> tau = counted_torque(t, wide(q), wide(qd));
-      const dynamics::JointVectorT<C> r =
-          tau - data_.c.template cast<C>() - data_.h.template cast<C>();
-      for (int i = 0; i < dynamics::kJoints; ++i) rhs(i) = r(i).value();
-      ops = tally.counts();
-    }
+    const dynamics::JointVectorT<C> tau = counted_torque(t, wide(q), wide(qd));
+    const dynamics::JointVectorT<C> r = tau - data_.c.template cast<C>() - data_.h.template cast<C>();
+    for (int i = 0; i < dynamics::kJoints; ++i) rhs(i) = r(i).value();
     const sc_core::sc_time before = sc_core::sc_time_stamp();
-    p.compute(to_operation_mix(ops), "right-hand side");
+    p.compute(rhs_, "right-hand side");
     times.integration_us += us_between(before, sc_core::sc_time_stamp());
     return solve(p, rhs, times);
   }
@@ -446,7 +485,7 @@ class Trajectory : public Workload {
   int master_;
   FarmProgram<S> farm_;
   PipelineProgram<S> pipeline_;
-  t800::OperationMix integrator_mix_;
+  t800::ComputeWork integrator_, rhs_;
   std::vector<dynamics::Subtask> subtasks_;  // the farm's, in its order
   dynamics::DynamicsData<S> data_;
   bool skip_numerics_asked_ = false;

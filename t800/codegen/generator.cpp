@@ -1,0 +1,378 @@
+#include "t800/codegen/generator.hpp"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "t800/codegen/expression.hpp"
+#include "t800/codegen/frame.hpp"
+#include "t800/codegen/runtime_library.hpp"
+#include "t800/codegen/subscripts.hpp"
+
+namespace t800::codegen {
+
+namespace {
+
+using isa::Instruction;
+using isa::MemoryRef;
+using isa::Op;
+using isa::Region;
+
+// A loop's iterations as the recording has them, found before generating: how many there are and
+// the index of the first (the control block is set up with both).
+struct LoopShape {
+  std::int64_t first = 0;
+  std::int64_t count = 0;
+};
+
+std::map<std::size_t, LoopShape> loop_shapes(const Recording& r) {
+  std::map<std::size_t, LoopShape> shapes;
+  std::vector<std::size_t> open;
+  for (std::size_t i = 0; i < r.events().size(); ++i) {
+    const Event& e = r.events()[i];
+    if (e.kind == EventKind::loop_begin) open.push_back(i);
+    if (e.kind == EventKind::iteration) {
+      LoopShape& s = shapes[open.back()];
+      if (s.count++ == 0) s.first = e.index;
+    }
+    if (e.kind == EventKind::loop_end) {
+      shapes[open.back()];  // a loop of no iterations still has a shape
+      open.pop_back();
+    }
+  }
+  return shapes;
+}
+
+// Code being emitted for one body: the top level, or one iteration of a loop.
+struct Body {
+  std::vector<CodeRun> runs;
+  isa::Sequence open;    // straight-line code not yet closed into a run
+  int static_bytes = 0;  // bytes of code this body occupies in memory
+  void flush(const std::string& label) {
+    if (open.empty()) return;
+    runs.push_back({label, std::move(open), 1});
+    open.clear();
+  }
+};
+
+bool same_code(const std::vector<CodeRun>& a, const std::vector<CodeRun>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].times != b[i].times || a[i].code.size() != b[i].code.size()) return false;
+    for (std::size_t k = 0; k < a[i].code.size(); ++k) {
+      const Instruction& x = a[i].code[k];
+      const Instruction& y = b[i].code[k];
+      if (x.op != y.op || x.operand != y.operand || x.param != y.param || x.real64 != y.real64 ||
+          !(x.data == y.data))
+        return false;
+    }
+  }
+  return true;
+}
+
+// One open replicated SEQ: its control block and the iterations emitted so far, grouped into
+// runs of identical code.
+struct OpenLoop {
+  int depth = 0;
+  LoopShape shape;
+  std::int64_t iteration = 0;  // iterations finished
+  int max_static = 0;          // the largest iteration's code
+  std::vector<CodeRun> group;  // the code of the current group of identical iterations
+  std::int64_t group_first = 0, group_size = 0;
+};
+
+// What the previous pass learnt: the code's size (the distance to the constant table after it)
+// and the frame's size (the operand of ajw).
+struct Sizes {
+  int code_bytes = 256;
+  int frame_words = 8;
+};
+
+class Generator : public EmitSink {
+ public:
+  Generator(const Recording& r, const Target& t, Sizes previous)
+      : r_(r),
+        target_(t),
+        previous_(previous),
+        subscripts_(classify_subscripts(r)),
+        shapes_(loop_shapes(r)),
+        frame_(r),
+        expressions_(r, *this, frame_) {}
+
+  CodeUnit run() {
+    bodies_.push_back(Body{});
+    call_and_enter();
+    for (std::size_t i = 0; i < r_.events().size(); ++i) event(i);
+    leave();
+    Body& top = bodies_.back();
+    top.flush(r_.name());
+    CodeUnit unit;
+    unit.name = r_.name();
+    unit.real64 = r_.real64();
+    unit.runs = std::move(top.runs);
+    unit.arrays = r_.arrays();
+    unit.code_bytes = top.static_bytes;
+    unit.constant_bytes = expressions_.constant_bytes();
+    unit.workspace_words = frame_.words();
+    unit.routines = routines_;
+    return unit;
+  }
+
+  // ---- EmitSink: where the expression emitter's instructions go ----
+  void emit(Instruction in) override {
+    Body& b = bodies_.back();
+    b.static_bytes += in.bytes();
+    b.open.push_back(std::move(in));
+  }
+
+  void call(const CodeUnit& routine) override {
+    Body& b = bodies_.back();
+    b.flush(label());
+    for (const CodeRun& run : routine.runs) b.runs.push_back(run);
+    // One routine in memory per name: REAL32OP serves + - * / by its operation code.
+    const auto known = std::find_if(routines_.begin(), routines_.end(),
+                                    [&](const CodeUnit* r) { return r->name == routine.name; });
+    if (known == routines_.end()) routines_.push_back(&routine);
+  }
+
+  std::string element(int access) const override {
+    const Access& a = r_.accesses()[std::size_t(access)];
+    const ArrayDecl& array = r_.arrays()[std::size_t(a.array)];
+    if (array.length == 1 && array.storage == ArrayStorage::workspace) return array.name;
+    return array.name + "[" + subscript_text(subscripts_[std::size_t(access)]) + "]";
+  }
+
+  void address(int access) override {
+    const Access& a = r_.accesses()[std::size_t(access)];
+    const ArrayDecl& array = r_.arrays()[std::size_t(a.array)];
+    const Subscript& s = subscripts_[std::size_t(access)];
+    const std::string element = this->element(access);
+    const int words = r_.real64() ? 2 : 1;
+    if (s.by_loop) {
+      emit({Op::ldl, frame_.loop_index(s.depth), 0, false, workspace(), index_name(s.depth)});
+      if (s.offset != 0) emit({Op::adc, s.offset, 0, false, {}, element});
+      if (target_.checked) {
+        emit({Op::ldc, array.length, 0, false, {}, "bound of " + array.name});
+        emit({Op::csub0, 0, 0, false, {}, "range check"});
+      }
+      base(a.array, element);
+      emit({r_.real64() ? Op::wsubdb : Op::wsub, 0, 0, false, {}, element});
+      return;
+    }
+    base(a.array, element);
+    if (s.offset != 0) emit({Op::ldnlp, s.offset * words, 0, false, {}, element});
+  }
+
+  const Target& target() const override { return target_; }
+
+  Sizes sizes() const { return {bodies_.front().static_bytes, frame_.words()}; }
+
+ private:
+  static MemoryRef workspace() { return {Region::workspace, -1}; }
+
+  static std::string index_name(int depth) {
+    static const char* names[] = {"i", "j", "k", "l", "m", "n"};
+    return depth < 6 ? names[depth] : "i" + std::to_string(depth);
+  }
+  static std::string subscript_text(const Subscript& s) {
+    if (!s.by_loop) return std::to_string(s.offset);
+    if (s.offset == 0) return index_name(s.depth);
+    return index_name(s.depth) + (s.offset > 0 ? "+" : "") + std::to_string(s.offset);
+  }
+
+  // The caller passes the arrays' addresses (three in registers, the rest in its workspace) and
+  // calls; the PROC opens its frame and points at its constant table.
+  void call_and_enter() {
+    int parameters = 0;
+    for (std::size_t a = 0; a < r_.arrays().size(); ++a) {
+      if (r_.arrays()[a].storage != ArrayStorage::pointer) continue;
+      emit({Op::ldlp, 0, 0, false, {}, "caller: address of " + r_.arrays()[a].name});
+      if (++parameters > 3)
+        emit({Op::stl, parameters - 4, 0, false, workspace(), "caller: parameter"});
+    }
+    emit({Op::call, 64, 0, false, workspace(), "call " + r_.name()});
+    emit({Op::ajw, -(previous_.frame_words - 4), 0, false, {}, "enter " + r_.name()});
+    if (expressions_.uses_constants()) {
+      emit({Op::ldc, previous_.code_bytes, 0, false, {}, "constant table"});
+      emit({Op::ldpi, 0, 0, false, {}, "constant table"});
+      emit({Op::stl, frame_.constant_table(), 0, false, workspace(), "constant table"});
+    }
+  }
+
+  void leave() {
+    emit({Op::ajw, previous_.frame_words - 4, 0, false, {}, "leave " + r_.name()});
+    emit({Op::ret, 0, 0, false, workspace(), "return"});
+  }
+
+  void base(int array, const std::string& element) {
+    const ArrayDecl& d = r_.arrays()[std::size_t(array)];
+    if (d.storage == ArrayStorage::workspace)
+      emit({Op::ldlp, frame_.array_base(array), 0, false, {}, element});
+    else
+      emit({Op::ldl, frame_.array_base(array), 0, false, workspace(), d.name + " (pointer)"});
+  }
+
+  std::string label() const {
+    if (loops_.empty()) return r_.name();
+    std::string text = r_.name();
+    for (const OpenLoop& l : loops_)
+      text += ", SEQ " + index_name(l.depth) + " iteration " +
+              std::to_string(l.shape.first + l.iteration);
+    return text;
+  }
+
+  void event(std::size_t i) {
+    const Event& e = r_.events()[i];
+    switch (e.kind) {
+      case EventKind::value:
+        expressions_.define(e.node, int(i));
+        break;
+      case EventKind::store:
+        expressions_.store(e.node, e.access, int(i));
+        break;
+      case EventKind::test:
+        expressions_.test(e.node, e.taken, int(i));
+        break;
+      case EventKind::integer:
+        for (std::int64_t k = 0; k < e.count; ++k) integer(e.integer);
+        break;
+      case EventKind::loop_begin:
+        loop_begin(i);
+        break;
+      case EventKind::iteration:
+        iteration(false);
+        break;
+      case EventKind::loop_end:
+        loop_end();
+        break;
+    }
+  }
+
+  // The integer statements' code (compiler writer's guide): an IF on a flag loads it and jumps on
+  // false; an assignment loads and stores; the FPU's error flag is tested and jumped on.
+  void integer(IntegerStatement s) {
+    const int flag = frame_.integer_variable();
+    switch (s) {
+      case IntegerStatement::test:
+        emit({Op::ldl, flag, 0, false, workspace(), "IF: load the condition"});
+        emit({Op::cj, 4, 0, false, {}, "IF"});
+        break;
+      case IntegerStatement::move:
+        emit({Op::ldl, flag, 0, false, workspace(), "integer assignment"});
+        emit({Op::stl, flag, 0, false, workspace(), "integer assignment"});
+        break;
+      case IntegerStatement::error_check:
+        if (target_.fpu)
+          emit({Op::fptesterror, 0, 0, false, {}, "test the FPU error flag"});
+        else
+          emit({Op::testerr, 0, 0, false, {}, "test the error flag"});
+        emit({Op::cj, 4, 0, false, {}, "IF error"});
+        break;
+    }
+  }
+
+  // SEQ i = first FOR count: the control block's index and count.
+  void loop_begin(std::size_t event_index) {
+    OpenLoop l;
+    l.depth = int(loops_.size());
+    l.shape = shapes_.at(event_index);
+    const int control = frame_.loop_index(l.depth);
+    const std::string name = "SEQ " + index_name(l.depth);
+    emit({Op::ldc, l.shape.first, 0, false, {}, name + ": first index"});
+    emit({Op::stl, control, 0, false, workspace(), name});
+    emit({Op::ldc, l.shape.count, 0, false, {}, name + ": count"});
+    emit({Op::stl, control + 1, 0, false, workspace(), name});
+    bodies_.back().flush(label());
+    loops_.push_back(l);
+    bodies_.push_back(Body{});
+    started_iteration_.push_back(false);
+  }
+
+  // Ends the open iteration (if any) with its lend and starts the next.
+  void iteration(bool last) {
+    OpenLoop& l = loops_.back();
+    if (started_iteration_.back()) {
+      Body& b = bodies_.back();
+      const int control = frame_.loop_index(l.depth);
+      const bool looping = l.iteration + 1 < l.shape.count;
+      emit({Op::ldlp, control, 0, false, {}, "SEQ " + index_name(l.depth) + ": end"});
+      emit({Op::ldc, b.static_bytes + 2, 0, false, {}, "back to the body"});
+      emit({Op::lend, 0, looping ? 1 : 0, false, workspace(), looping ? "loop" : "exit"});
+      b.flush(label());
+      l.max_static = std::max(l.max_static, b.static_bytes);
+      close_iteration(l, std::move(b.runs));
+      ++l.iteration;
+      bodies_.back() = Body{};
+    }
+    started_iteration_.back() = !last;
+  }
+
+  void close_iteration(OpenLoop& l, std::vector<CodeRun> runs) {
+    if (l.group_size > 0 && same_code(l.group, runs)) {
+      ++l.group_size;
+      return;
+    }
+    flush_group(l);
+    l.group = std::move(runs);
+    l.group_first = l.shape.first + l.iteration;
+    l.group_size = 1;
+  }
+
+  // The group's runs go to the enclosing body, each run as often as the group has iterations.
+  void flush_group(OpenLoop& l) {
+    if (l.group_size == 0) return;
+    Body& parent = bodies_[bodies_.size() - 2];
+    const std::string range = "SEQ " + index_name(l.depth) + " iterations " +
+                              std::to_string(l.group_first) + ".." +
+                              std::to_string(l.group_first + l.group_size - 1);
+    for (CodeRun& run : l.group) {
+      run.times *= l.group_size;
+      if (l.group_size > 1) run.label += " (" + range + ")";
+      parent.runs.push_back(std::move(run));
+    }
+    l.group.clear();
+    l.group_size = 0;
+  }
+
+  void loop_end() {
+    iteration(true);
+    OpenLoop& l = loops_.back();
+    flush_group(l);
+    const int loop_static = l.max_static;
+    loops_.pop_back();
+    bodies_.pop_back();
+    started_iteration_.pop_back();
+    bodies_.back().static_bytes += loop_static;
+  }
+
+  const Recording& r_;
+  Target target_;
+  Sizes previous_;
+  std::vector<Subscript> subscripts_;
+  std::map<std::size_t, LoopShape> shapes_;
+  Frame frame_;
+  ExpressionEmitter expressions_;
+  std::vector<Body> bodies_;
+  std::vector<OpenLoop> loops_;
+  std::vector<bool> started_iteration_;
+  std::vector<const CodeUnit*> routines_;
+};
+
+}  // namespace
+
+// Two passes: the first finds the code's and the frame's sizes, which the second writes into the
+// operands that depend on them (ajw, the distance to the constant table after the code).
+CodeUnit generate(const Recording& recording, const Target& target) {
+  Generator first(recording, target, Sizes{});
+  first.run();
+  return Generator(recording, target, first.sizes()).run();
+}
+
+std::int64_t CodeUnit::executed_instructions() const {
+  std::int64_t n = 0;
+  for (const CodeRun& run : runs) n += std::int64_t(run.code.size()) * run.times;
+  return n;
+}
+
+}  // namespace t800::codegen

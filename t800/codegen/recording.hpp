@@ -1,0 +1,158 @@
+// What a kernel does, recorded as it runs: the dataflow of its REAL arithmetic and the occam
+// structure around it (replicated SEQs, stores into arrays, tests), so that a code generator can
+// emit the T800 code an occam compiler would (generator.hpp).
+//
+// A recording scalar (dynamics::Counted) reports every operation to the Recording active on its
+// thread. Values that come from memory are loads of array elements the kernel or its caller
+// declared (Recording::declare_array); literals and model constants are constants (a REAL in the
+// code's constant table); intermediate results are nodes. Assigning to a declared element is a
+// store. Control structure comes from markers the kernel places where occam has it (seq(),
+// integer statements); a comparison is a test whose outcome the recording keeps, so data-dependent
+// paths are recorded as they ran.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace t800::codegen {
+
+enum class NodeKind : std::uint8_t {
+  constant,  // a REAL literal or model constant
+  load,      // an element of a declared array (or a declared scalar variable)
+  add,
+  sub,
+  mul,
+  div,
+  neg,
+  abs,
+  sqrt,
+  greater,  // a > b, the result goes to the integer stack (fpgt)
+  equal,    // a = b (fpeq)
+  sine,     // calls of the occam library's SIN and COS routines
+  cosine,
+};
+bool is_comparison(NodeKind kind);
+bool is_routine(NodeKind kind);
+
+// An element of a declared array, as recorded (the index is the concrete one; the generator works
+// out from the loop it is in whether the code subscripts it by the loop's index).
+struct Access {
+  int array = -1;
+  std::int64_t index = 0;
+};
+
+struct Node {
+  NodeKind kind = NodeKind::constant;
+  int a = -1, b = -1;  // operands
+  int access = -1;     // load: index into Recording::accesses()
+  double value = 0;    // constant
+  int block = 0;       // the block (straight-line code or one loop iteration) it was computed in
+};
+
+// How an array is held (compiler writer's guide, "vectors"): through a pointer in a workspace word
+// (a parameter, or an array in vector space) or inside the workspace itself.
+enum class ArrayStorage : std::uint8_t { pointer, workspace };
+
+struct ArrayDecl {
+  std::string name;
+  std::int64_t length = 0;
+  ArrayStorage storage = ArrayStorage::pointer;
+};
+
+// Integer work a kernel states where occam would have it (elimination's pivot bookkeeping, the
+// FPU error flag test): the code generator emits the instructions each one compiles to.
+enum class IntegerStatement : std::uint8_t {
+  test,         // IF on an integer condition: load it, conditional jump
+  move,         // an integer assignment: load, store
+  error_check,  // test the FPU's error flag once (fptesterror, conditional jump)
+};
+
+enum class EventKind : std::uint8_t {
+  value,       // node `node` was computed
+  store,       // `node` stored into access `access`
+  test,        // IF on comparison `node`; `taken` tells which way it went
+  integer,     // `count` integer statements of kind `integer`
+  loop_begin,  // a replicated SEQ begins
+  iteration,   // an iteration begins, its index being `index`
+  loop_end,
+};
+
+struct Event {
+  EventKind kind = EventKind::value;
+  int node = -1;
+  int access = -1;
+  bool taken = false;
+  IntegerStatement integer = IntegerStatement::test;
+  std::int64_t count = 0;
+  std::int64_t index = 0;
+  int block = 0;  // the block it happened in
+};
+
+// A recorded kernel: plain data, kept and compiled for each processor type that runs it.
+class Recording {
+ public:
+  Recording(std::string name, bool real64);
+
+  // The recording receiving operations on this thread (RecordingScope), or nullptr.
+  static Recording* current();
+
+  const std::string& name() const { return name_; }
+  bool real64() const { return real64_; }
+  // Unique among the recordings of this run: a value carries it with its node, so that a value
+  // from another recording is not mistaken for one of this one's.
+  std::uint32_t serial() const { return serial_; }
+
+  // ---- Declarations (by kernels and their callers) ----
+  int declare_array(std::string name, std::int64_t length,
+                    ArrayStorage storage = ArrayStorage::pointer);
+  int access(int array, std::int64_t index);
+
+  // ---- Called by the recording scalar ----
+  int constant(double value);
+  int load(int access);
+  int operation(NodeKind kind, int a, int b = -1);
+  void store(int access, int node);
+  void test(int comparison, bool outcome);
+
+  // ---- Called by occam structure markers ----
+  void integer(IntegerStatement statement, std::int64_t count);
+  void loop_begin();
+  void iteration(std::int64_t index);
+  void loop_end();
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const std::vector<Event>& events() const { return events_; }
+  const std::vector<Access>& accesses() const { return accesses_; }
+  const std::vector<ArrayDecl>& arrays() const { return arrays_; }
+  int blocks() const { return next_block_; }
+
+ private:
+  int add_node(Node node);
+  void add_event(Event e);
+  int block() const;
+  std::string name_;
+  bool real64_;
+  std::uint32_t serial_;
+  std::vector<Node> nodes_;
+  std::vector<Event> events_;
+  std::vector<Access> accesses_;
+  std::vector<ArrayDecl> arrays_;
+  std::vector<int> open_blocks_{0};  // the block being recorded, innermost last
+  int next_block_ = 1;
+};
+
+// Makes a recording the one receiving operations on this thread while it is alive (scopes nest:
+// an inner one hides the outer until it ends).
+class RecordingScope {
+ public:
+  explicit RecordingScope(Recording& recording);
+  ~RecordingScope();
+  RecordingScope(const RecordingScope&) = delete;
+  RecordingScope& operator=(const RecordingScope&) = delete;
+
+ private:
+  Recording* outer_;
+};
+
+}  // namespace t800::codegen

@@ -1,0 +1,147 @@
+// The occam structure numerical kernels mark, so that the code generator can compile them as
+// occam would: replicated SEQs and declared arrays. For plain float/double kernels these cost
+// nothing; for the instrumented scalar (dynamics::Counted) they tally loops for the op-count
+// model and mark the recording for the instruction-level one.
+//
+//   for (std::size_t j : occam::seq<S>(n)) out[j] = row[j + 1] - m * pivot[j];   // SEQ j = 0 FOR n
+//   occam::declare(out, "out");  // out's elements are an array: assigning one is a store
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "t800/codegen/recording.hpp"
+#include "workloads/dynamics/counted.hpp"
+
+namespace occam {
+
+// Loops and iterations of replicated SEQs run while it is alive (per thread; nests).
+class LoopTally {
+ public:
+  LoopTally() : outer_(active()) { active() = this; }
+  ~LoopTally() { active() = outer_; }
+  LoopTally(const LoopTally&) = delete;
+  LoopTally& operator=(const LoopTally&) = delete;
+
+  long loops() const { return loops_; }
+  long iterations() const { return iterations_; }
+  static LoopTally* current() { return active(); }
+  void loop() { ++loops_; }
+  void iteration() { ++iterations_; }
+
+ private:
+  static LoopTally*& active() {
+    thread_local LoopTally* tally = nullptr;
+    return tally;
+  }
+  long loops_ = 0, iterations_ = 0;
+  LoopTally* outer_;
+};
+
+// SEQ i = first FOR count, as a C++ range: each iteration begins when the loop variable is read.
+template <class S>
+class Seq {
+  static constexpr bool kInstrumented = dynamics::is_counted_v<S>;
+
+ public:
+  Seq(std::size_t first, std::size_t count) : first_(first), count_(count) {
+    if constexpr (kInstrumented) {
+      if (LoopTally* t = LoopTally::current()) t->loop();
+      if (auto* r = t800::codegen::Recording::current()) r->loop_begin();
+    }
+  }
+  ~Seq() {
+    if constexpr (kInstrumented) {
+      if (auto* r = t800::codegen::Recording::current()) r->loop_end();
+    }
+  }
+  Seq(const Seq&) = delete;
+  Seq& operator=(const Seq&) = delete;
+
+  class iterator {
+   public:
+    explicit iterator(std::size_t i) : i_(i) {}
+    std::size_t operator*() const {
+      if constexpr (kInstrumented) {
+        if (LoopTally* t = LoopTally::current()) t->iteration();
+        if (auto* r = t800::codegen::Recording::current()) r->iteration(std::int64_t(i_));
+      }
+      return i_;
+    }
+    iterator& operator++() {
+      ++i_;
+      return *this;
+    }
+    bool operator!=(const iterator& o) const { return i_ != o.i_; }
+
+   private:
+    std::size_t i_;
+  };
+  iterator begin() const { return iterator(first_); }
+  iterator end() const { return iterator(first_ + count_); }
+
+ private:
+  std::size_t first_, count_;
+};
+
+template <class S>
+Seq<S> seq(std::size_t count) {
+  return Seq<S>(0, count);
+}
+template <class S>
+Seq<S> seq(std::size_t first, std::size_t count) {
+  return Seq<S>(first, count);
+}
+
+// Makes values an array of the active recording: reading an element is a load, assigning one a
+// store. `in_workspace`: a small local array in the PROC's workspace rather than one reached
+// through a pointer (a parameter or vector space).
+template <class S>
+void declare(S* values, std::size_t count, const char* name, bool in_workspace = false) {
+  if constexpr (dynamics::is_counted_v<S>) {
+    auto* r = t800::codegen::Recording::current();
+    if (!r) return;
+    const int array = r->declare_array(name, std::int64_t(count),
+                                       in_workspace ? t800::codegen::ArrayStorage::workspace
+                                                    : t800::codegen::ArrayStorage::pointer);
+    for (std::size_t i = 0; i < count; ++i) values[i].bind(r->access(array, std::int64_t(i)));
+  }
+}
+template <class S>
+void declare(std::vector<S>& values, const char* name, bool in_workspace = false) {
+  declare(values.data(), values.size(), name, in_workspace);
+}
+template <class S, std::size_t N>
+void declare(std::array<S, N>& values, const char* name, bool in_workspace = false) {
+  declare(values.data(), N, name, in_workspace);
+}
+// Scattered values (the fields of a message struct) as one array, in the order given.
+template <class S>
+void declare_each(const std::vector<S*>& elements, const char* name) {
+  if constexpr (dynamics::is_counted_v<S>) {
+    auto* r = t800::codegen::Recording::current();
+    if (!r) return;
+    const int array = r->declare_array(name, std::int64_t(elements.size()));
+    for (std::size_t i = 0; i < elements.size(); ++i)
+      elements[i]->bind(r->access(array, std::int64_t(i)));
+  }
+}
+
+// A scalar variable of the PROC's workspace.
+template <class S>
+void declare_variable(S& variable, const char* name) {
+  declare(&variable, 1, name, true);
+}
+
+// Integer statements occam would compile where the kernel says (tests on integers, assignments,
+// the FPU error flag's test): recorded, never counted here (kernels count their integer work).
+template <class S>
+void integer(t800::codegen::IntegerStatement statement, long count = 1) {
+  if constexpr (dynamics::is_counted_v<S>) {
+    if (auto* r = t800::codegen::Recording::current()) r->integer(statement, count);
+  }
+}
+
+}  // namespace occam
