@@ -17,6 +17,7 @@ class LimitScanner {
     if (text_.size() > TomlLimits::kMaxBytes)
       fail({}, "the text is " + std::to_string(text_.size()) + " bytes; at most " +
                    std::to_string(TomlLimits::kMaxBytes) + " are read");
+    check_utf8();
     bool key_next = true;  // at the start of a line outside brackets, or after '{' or ','
     while (i_ < text_.size()) {
       if (key_next) {
@@ -46,6 +47,9 @@ class LimitScanner {
       } else if (c == ',') {
         advance();
         key_next = !open_.empty() && open_.back() == '{';
+      } else if (static_cast<unsigned char>(c) >= 0x80) {
+        fail(here(), "a non-ASCII character outside a string or comment; TOML allows them only in "
+                     "strings, quoted keys and comments");
       } else {
         advance();
       }
@@ -58,6 +62,38 @@ class LimitScanner {
   };
 
   Position here() const { return {line_, column_}; }
+
+  // Length of the UTF-8 sequence at `at`, or 0 when it is not one (a stray continuation byte, a
+  // truncated or overlong sequence, a surrogate, beyond U+10FFFF).
+  std::size_t utf8_length(std::size_t at) const {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text_[at + k]); };
+    const unsigned char b = byte(0);
+    if (b < 0x80) return 1;
+    const std::size_t n = b >= 0xF0 ? 4 : b >= 0xE0 ? 3 : b >= 0xC2 ? 2 : 0;
+    if (n == 0 || b > 0xF4 || at + n > text_.size()) return 0;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((byte(k) & 0xC0) != 0x80) return 0;
+    if ((b == 0xE0 && byte(1) < 0xA0) || (b == 0xED && byte(1) >= 0xA0) ||  // overlong, surrogate
+        (b == 0xF0 && byte(1) < 0x90) || (b == 0xF4 && byte(1) >= 0x90))    // overlong, > U+10FFFF
+      return 0;
+    return n;
+  }
+
+  // The whole text first, with the position of the first bad byte.
+  void check_utf8() const {
+    int line = 1, column = 1;
+    for (std::size_t at = 0; at < text_.size();) {
+      const std::size_t n = utf8_length(at);
+      if (n == 0) fail({line, column}, "invalid UTF-8 (TOML files are UTF-8 text)");
+      if (text_[at] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+      at += n;
+    }
+  }
 
   [[noreturn]] void fail(Position at, const std::string& message) const {
     if (!positions_ || at.line == 0) throw ConfigError({name_, 0, 0}, message);

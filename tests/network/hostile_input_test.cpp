@@ -112,6 +112,28 @@ TEST(HostileInput, HugeStringsAndFilesAreRefused) {
                        {"a string longer than"}));
 }
 
+// Found by fuzzing (fuzz/corpus/*/crash-*): toml++ 3.3 reached an unreachable point (undefined
+// behaviour) on some non-ASCII characters outside strings, U+039A for one, and terminated on
+// invalid UTF-8 in a --set value. Both are refused with their place first; non-ASCII text in
+// strings and comments stays fine.
+TEST(HostileInput, NonAsciiOutsideStringsAndInvalidUtf8AreErrorsAtTheirPlace) {
+  const std::string kappa = "\xce\x9a";  // U+039A
+  const std::string key = write_file("kappa.toml", "name = \"x\"\ntopology" + kappa + "\n");
+  EXPECT_TRUE(fails_at([&] { network::load_topology(key); }, key, 2, 9,
+                       {"a non-ASCII character outside a string"}));
+  const std::string space = write_file("space.toml", "a = 1 \xc2\xa1\n");
+  EXPECT_TRUE(fails_at([&] { tools::load_scene(space); }, space, 1, 7,
+                       {"a non-ASCII character outside a string"}));
+  const std::string bad = write_file("bad.toml", "# fine\nname = \"a\xb5" "b\"\n");
+  EXPECT_TRUE(fails_at([&] { tools::check_file(bad); }, bad, 2, 10, {"invalid UTF-8"}));
+  const std::string scene = nettest::source_dir() + "/configs/scenes/dynamics-farm.toml";
+  const std::string flag = "workload.q=[0.1, 0.2, 0.5, 0.3, 0.4, 0\xb5\xb5.5]";
+  EXPECT_TRUE(fails_at([&] { tools::load_scene(scene, {flag}); }, "--set " + flag, 0, 0,
+                       {"invalid UTF-8"}));
+  EXPECT_NO_THROW(network::check_toml_limits(
+      "name = \"" + kappa + "\" # " + kappa + "\n'" + kappa + "' = 1\n", "ok.toml"));
+}
+
 // An absurd network is refused, not attempted: 40,000 transputers once ran the host out of memory
 // maps.
 TEST(HostileInput, MoreProcessorsThanSimulatedAreRefused) {
