@@ -50,7 +50,7 @@ std::string toml_quoted(const std::string& text) {
   std::string quoted = "\"";
   for (char c : text) {
     if (c == '"' || c == '\\') quoted += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
       quoted += ' ';  // control characters cannot appear in a basic string
       continue;
     }
@@ -76,7 +76,11 @@ toml::table parse_override(const std::string& key, const std::string& value,
       // fall through: a bare string
     }
   }
-  return parse(key + " = " + toml_quoted(value));
+  try {
+    return parse(key + " = " + toml_quoted(value));
+  } catch (const toml::parse_error& e) {  // not expected: the value is quoted, the key checked
+    throw ConfigError({flag, 0, 0}, std::string(e.description()));
+  }
 }
 
 // Applies one override and returns its key.

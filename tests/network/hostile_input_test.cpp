@@ -124,7 +124,9 @@ TEST(HostileInput, NonAsciiOutsideStringsAndInvalidUtf8AreErrorsAtTheirPlace) {
   const std::string space = write_file("space.toml", "a = 1 \xc2\xa1\n");
   EXPECT_TRUE(fails_at([&] { tools::load_scene(space); }, space, 1, 7,
                        {"a non-ASCII character outside a string"}));
-  const std::string bad = write_file("bad.toml", "# fine\nname = \"a\xb5" "b\"\n");
+  const std::string bad = write_file("bad.toml",
+                                     "# fine\nname = \"a\xb5"
+                                     "b\"\n");
   EXPECT_TRUE(fails_at([&] { tools::check_file(bad); }, bad, 2, 10, {"invalid UTF-8"}));
   const std::string scene = nettest::source_dir() + "/configs/scenes/dynamics-farm.toml";
   const std::string flag = "workload.q=[0.1, 0.2, 0.5, 0.3, 0.4, 0\xb5\xb5.5]";
@@ -132,6 +134,22 @@ TEST(HostileInput, NonAsciiOutsideStringsAndInvalidUtf8AreErrorsAtTheirPlace) {
                        {"invalid UTF-8"}));
   EXPECT_NO_THROW(network::check_toml_limits(
       "name = \"" + kappa + "\" # " + kappa + "\n'" + kappa + "' = 1\n", "ok.toml"));
+}
+
+// Found by fuzzing: a value with a DEL character could not be quoted as a TOML string, and the
+// parse error escaped without naming the flag (fuzz/corpus/set/crash-delete-character-in-value).
+TEST(HostileInput, ControlCharactersInOverrideValuesNameTheFlag) {
+  const std::string scene = nettest::source_dir() + "/configs/scenes/pingpong.toml";
+  for (const std::string value : {"a\x7f"
+                                  "b",
+                                  "a\x01"
+                                  "b",
+                                  "a\x1f"
+                                  "b"}) {
+    const std::string flag = "workload.from=" + value;
+    EXPECT_TRUE(fails_at([&] { tools::load_scene(scene, {flag}); }, "--set " + flag, 0, 0,
+                         {"no processor 'a b'"}));
+  }
 }
 
 // An absurd network is refused, not attempted: 40,000 transputers once ran the host out of memory
