@@ -1,5 +1,6 @@
 #include "network/toml_limits.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace network {
@@ -26,14 +27,19 @@ class LimitScanner {
         continue;
       }
       const char c = text_[i_];
-      if (c == '"' || c == '\'') {
+      if ((c == '"' || c == '\'') &&
+          std::string_view("=[{,").find(last_) != std::string_view::npos) {
         string();
+        last_ = c;
       } else if (c == '#') {
         comment();
       } else if (c == '\n') {
         advance();
         key_next = open_.empty();
+      } else if (c == ' ' || c == '\t' || c == '\r') {
+        advance();
       } else if (c == '[' || c == '{') {
+        last_ = c;
         const Position at = here();
         advance();
         open_.push_back(c);
@@ -42,15 +48,17 @@ class LimitScanner {
                        std::to_string(TomlLimits::kMaxNesting) + " deep");
         key_next = c == '{';
       } else if (c == ']' || c == '}') {
+        last_ = c;
         advance();
         if (!open_.empty()) open_.pop_back();
       } else if (c == ',') {
+        last_ = c;
         advance();
         key_next = !open_.empty() && open_.back() == '{';
       } else if (static_cast<unsigned char>(c) >= 0x80) {
-        fail(here(), "a non-ASCII character outside a string or comment; TOML allows them only in "
-                     "strings, quoted keys and comments");
+        fail_non_ascii(here());
       } else {
+        last_ = c;  // '=' after a key, or part of a bare value
         advance();
       }
     }
@@ -93,6 +101,12 @@ class LimitScanner {
       }
       at += n;
     }
+  }
+
+  [[noreturn]] void fail_non_ascii(Position at) const {
+    fail(at,
+         "a non-ASCII character outside a string or comment; TOML allows them only in strings, "
+         "quoted keys and comments");
   }
 
   [[noreturn]] void fail(Position at, const std::string& message) const {
@@ -171,7 +185,10 @@ class LimitScanner {
     }
   }
 
-  // A basic or literal string, single- or multi-line; measures its length.
+  // A basic or literal string, single- or multi-line; measures its length. toml++ tests the
+  // character after a backslash, and the characters after a line-ending backslash, for whitespace:
+  // they must be ASCII. So must everything in a string that does not end (the parser reads on as a
+  // bare value).
   void string() {
     const Position start = here();
     const char quote = text_[i_];
@@ -179,17 +196,47 @@ class LimitScanner {
     const bool multi_line = at(triple);
     for (std::size_t n = 0; n < (multi_line ? 3u : 1u); ++n) advance();
     const std::size_t first = i_;
+    std::optional<Position> non_ascii;
     while (i_ < text_.size()) {
       if (multi_line ? at(triple) : text_[i_] == quote) break;
       if (!multi_line && text_[i_] == '\n') break;  // unterminated: the parser says so
-      if (quote == '"' && text_[i_] == '\\' && i_ + 1 < text_.size()) advance();
+      if (quote == '"' && text_[i_] == '\\' && i_ + 1 < text_.size()) {
+        advance();
+        escaped_character(multi_line);
+      }
+      if (!non_ascii && static_cast<unsigned char>(text_[i_]) >= 0x80) non_ascii = here();
       advance();
       if (i_ - first > TomlLimits::kMaxStringBytes)
         fail(start,
              "a string longer than " + std::to_string(TomlLimits::kMaxStringBytes) + " bytes");
     }
-    if (i_ < text_.size() && text_[i_] != '\n')
+    const bool ended = i_ < text_.size() && text_[i_] != '\n';
+    if (!ended && non_ascii)
+      fail(*non_ascii,
+           "a non-ASCII character in a string that does not end (the parser would read "
+           "on as a bare value, where TOML allows only ASCII)");
+    if (ended)
       for (std::size_t n = 0; n < (multi_line ? 3u : 1u) && i_ < text_.size(); ++n) advance();
+  }
+
+  // At the character after a backslash in a basic string.
+  void escaped_character(bool multi_line) {
+    if (i_ >= text_.size()) return;
+    if (static_cast<unsigned char>(text_[i_]) >= 0x80)
+      fail(here(), "a backslash before a non-ASCII character; escapes are \\n, \\t, \\uXXXX, ...");
+    if (!multi_line) return;
+    std::size_t j =
+        i_;  // a line-ending backslash: blanks, a newline, then all whitespace is skipped
+    while (j < text_.size() && (text_[j] == ' ' || text_[j] == '\t' || text_[j] == '\r')) ++j;
+    if (j >= text_.size() || text_[j] != '\n') return;
+    while (j < text_.size() && std::string_view(" \t\r\n").find(text_[j]) != std::string_view::npos)
+      ++j;
+    if (j < text_.size() && static_cast<unsigned char>(text_[j]) >= 0x80) {
+      while (i_ < j) advance();
+      fail(here(),
+           "a non-ASCII character first after a line-ending backslash in a multi-line string; "
+           "toml++ cannot read it there: end the line without the backslash");
+    }
   }
 
   std::string_view text_;
@@ -198,6 +245,7 @@ class LimitScanner {
   std::size_t i_ = 0;
   int line_ = 1, column_ = 1;
   std::vector<char> open_;  // '[' and '{' not yet closed
+  char last_ = '=';  // the last character of a value's tokens: a quote after =[{, opens a string
 };
 
 }  // namespace
