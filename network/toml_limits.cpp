@@ -27,10 +27,9 @@ class LimitScanner {
         continue;
       }
       const char c = text_[i_];
-      if ((c == '"' || c == '\'') &&
-          std::string_view("=[{,").find(last_) != std::string_view::npos) {
+      if ((c == '"' || c == '\'') && value_start_) {
         string();
-        last_ = c;
+        value_start_ = false;
       } else if (c == '#') {
         comment();
       } else if (c == '\n') {
@@ -38,8 +37,7 @@ class LimitScanner {
         key_next = open_.empty();
       } else if (c == ' ' || c == '\t' || c == '\r') {
         advance();
-      } else if (c == '[' || c == '{') {
-        last_ = c;
+      } else if (c == '[' || c == '{') {  // an array's first value starts here if the array does
         const Position at = here();
         advance();
         open_.push_back(c);
@@ -48,17 +46,18 @@ class LimitScanner {
                        std::to_string(TomlLimits::kMaxNesting) + " deep");
         key_next = c == '{';
       } else if (c == ']' || c == '}') {
-        last_ = c;
+        value_start_ = false;
         advance();
         if (!open_.empty()) open_.pop_back();
       } else if (c == ',') {
-        last_ = c;
+        value_start_ = true;
         advance();
         key_next = !open_.empty() && open_.back() == '{';
       } else if (static_cast<unsigned char>(c) >= 0x80) {
         fail_non_ascii(here());
       } else {
-        last_ = c;  // '=' after a key, or part of a bare value
+        value_start_ =
+            false;  // a bare value (or garbage): toml++ reads on to a space, ',', ']', ...
         advance();
       }
     }
@@ -156,6 +155,11 @@ class LimitScanner {
       return;
     }
     key("a key");
+    skip_blanks();
+    if (i_ < text_.size() && text_[i_] == '=') {
+      advance();
+      value_start_ = true;
+    }
   }
 
   static bool bare_key_char(char c) {
@@ -245,7 +249,10 @@ class LimitScanner {
   std::size_t i_ = 0;
   int line_ = 1, column_ = 1;
   std::vector<char> open_;  // '[' and '{' not yet closed
-  char last_ = '=';  // the last character of a value's tokens: a quote after =[{, opens a string
+  // A quote opens a string only where a value starts: after a key's '=', an array's '[' or a ','.
+  // Inside a bare value toml++ reads quotes and all up to a space, ',', ']' ..., testing each
+  // character for a space (hence non-ASCII characters there are errors).
+  bool value_start_ = false;
 };
 
 }  // namespace

@@ -132,6 +132,24 @@ TEST(HostileInput, NonAsciiOutsideStringsAndInvalidUtf8AreErrorsAtTheirPlace) {
   const std::string flag = "workload.q=[0.1, 0.2, 0.5, 0.3, 0.4, 0\xb5\xb5.5]";
   EXPECT_TRUE(fails_at([&] { tools::load_scene(scene, {flag}); }, "--set " + flag, 0, 0,
                        {"invalid UTF-8"}));
+  // Where toml++ would test a non-ASCII character for a space: in a bare value (quotes and '=' in
+  // it included), in a string that does not end, after a backslash, after a line-ending backslash.
+  for (const std::string& value : {"[1,2,3,4x'" + kappa + "]", "-[\"" + kappa + "\"]",
+                                   "x=\"" + kappa + "\"", "1\"" + kappa + "\""}) {
+    const std::string set = "--set workload.q=" + value;
+    EXPECT_TRUE(fails_at([&] { tools::load_scene(scene, {set.substr(6)}); }, set, 0, 0,
+                         {"a non-ASCII character outside a string"}))
+        << value;
+  }
+  const std::string open = write_file("open.toml", "a = '" + kappa + "\n");
+  EXPECT_TRUE(
+      fails_at([&] { tools::check_file(open); }, open, 1, 6, {"in a string that does not end"}));
+  const std::string escape = write_file("escape.toml", "a = \"x\\" + kappa + "\"\n");
+  EXPECT_TRUE(fails_at([&] { tools::check_file(escape); }, escape, 1, 8,
+                       {"a backslash before a non-ASCII"}));
+  const std::string trimmed = write_file("trimmed.toml", "a = \"\"\"x\\\n   " + kappa + "\"\"\"\n");
+  EXPECT_TRUE(fails_at([&] { tools::check_file(trimmed); }, trimmed, 2, 4,
+                       {"after a line-ending backslash"}));
   EXPECT_NO_THROW(network::check_toml_limits(
       "name = \"" + kappa + "\" # " + kappa + "\n'" + kappa + "' = 1\n", "ok.toml"));
 }
