@@ -7,8 +7,9 @@ namespace network {
 
 namespace {
 
-// A lexical pass that knows just enough TOML to tell keys, headers, strings, comments and brackets
-// apart; everything else is skipped. It never rejects malformed text: it only measures.
+// A lexical pass that knows just enough TOML to tell keys, headers, values, strings, comments and
+// brackets apart. It measures, and refuses only what toml++ must not see (the header says what);
+// other malformed text is the parser's to report.
 class LimitScanner {
  public:
   LimitScanner(std::string_view text, const std::string& name, bool positions)
@@ -55,9 +56,8 @@ class LimitScanner {
         key_next = !open_.empty() && open_.back() == '{';
       } else if (static_cast<unsigned char>(c) >= 0x80) {
         fail_non_ascii(here());
-      } else {
-        value_start_ =
-            false;  // a bare value (or garbage): toml++ reads on to a space, ',', ']', ...
+      } else {  // a bare value (or garbage): toml++ reads on to a space, ',', ']', ...
+        value_start_ = false;
         advance();
       }
     }
