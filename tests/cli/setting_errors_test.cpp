@@ -8,6 +8,7 @@
 
 #include "cli_fixtures.hpp"
 #include "network/config_error.hpp"
+#include "tools/paper_data.hpp"
 #include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 
@@ -135,6 +136,33 @@ TEST(CheckCommand, FindsWhatRunWouldFind) {
     EXPECT_EQ(run.exit_code, 2) << run.out;
     EXPECT_NE(check.out.find(c.says), std::string::npos) << check.out;
     EXPECT_NE(run.out.find(c.says), std::string::npos) << run.out;
+  }
+}
+
+// Found by fuzzing (fuzz/corpus/config/crash-paper-data-count-beyond-int): a count in the paper's
+// data was converted to int whatever its value (undefined beyond int's range); table 5's rows took
+// any non-number as 0.
+TEST(PaperData, CountsAndPercentagesMustBeWhatTheySay) {
+  const std::string base =
+      "[table4]\nworkers = [1]\ntp_ms = [2.0]\n[table6]\nm = [1]\ntp_ms = [1.0]\n";
+  struct Case {
+    std::string text, says;
+    int line, column;
+  };
+  for (const Case& c :
+       {Case{"[table5]\nworkers = [3e16]\nutilisation_pct = [[1]]\n", "whole number", 2, 12},
+        Case{"[table5]\nworkers = [1.5]\nutilisation_pct = [[1]]\n", "whole number", 2, 12},
+        Case{"[table5]\nworkers = [1]\nutilisation_pct = [[\"x\"]]\n", "expected a number", 3, 21},
+        Case{"[table5]\nworkers = [1]\nutilisation_pct = [7]\n", "an array of numbers per row", 3,
+             20},
+        Case{"[table5]\nworkers = [1]\nutilisation_pct = [[nan]]\n", "finite", 3, 21}}) {
+    const std::string path = scene_file(c.text + base);
+    try {
+      tools::load_paper_tables(path);
+      ADD_FAILURE() << c.text << " accepted";
+    } catch (const network::ConfigError& e) {
+      EXPECT_TRUE(at(e, path, c.line, c.column, c.says)) << c.text;
+    }
   }
 }
 
