@@ -33,7 +33,7 @@ class ComputeModel {
   ComputeModel(const ProcessorConfig& config, const ComputeSettings& settings);
 
   std::int64_t cycles(const ComputeWork& work) const;
-  // One channel communication as occam compiles it (docs/t800-timing.md, "Communication"): the
+  // One channel communication as occam compiles it (docs/t800-timing.md, "Communication and processes"): the
   // buffer's address, the channel word, the length, then in or out -- 2w + 19 when this end copies
   // the message (an internal channel's second party), 19 when a link engine moves it.
   std::int64_t communication_cycles(std::int64_t bytes, bool copies) const;

@@ -251,7 +251,8 @@ network::Topology SceneReader::topology(const toml::table* net) const {
 
 // network.processor, network.memory, network.wait_states: the type and memory placement of every
 // processor, generated or from a topology file (where they override its [[processor]] settings).
-void SceneReader::apply_processor_keys(const toml::table& net, t800::ProcessorConfig& config) const {
+void SceneReader::apply_processor_keys(const toml::table& net,
+                                       t800::ProcessorConfig& config) const {
   if (const toml::node* type = net.get("processor")) {
     const std::string name = text(*type, "network.processor");
     auto parsed_type = t800::parse_processor_type(name);

@@ -7,8 +7,8 @@
 //   REAL32OP / REAL64OP, the T414's software arithmetic (called as REAL32OPERR%CHK(a, op, b) by
 //   the INMOS compiler): unpack both operands, align, operate on the fractions, normalise, round,
 //   with the T414's floating-point support instructions.
-// Their timing follows from the instruction tables like any generated code; docs/t800-timing.md
-// ("Run-time library") states what is assumed (U).
+// Their timing follows from the instruction tables like any generated code; docs/compute-model.md
+// ("What is assumed") states what is assumed (U).
 #include "t800/codegen/runtime_library.hpp"
 
 #include <map>
