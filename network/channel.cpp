@@ -25,6 +25,7 @@ void internal_out(Process& p, Channel& c, t800::Message m) {
   p.communicate(m.bytes, false);
   c.slot = std::move(m);
   c.waiting_writer = &p;
+  if (c.alting_reader) c.alting_reader->wake_alt();  // the ALT's guard is ready now
   p.deschedule();
   while (c.waiting_writer == &p) sc_core::wait(c.handed_over);
   p.reschedule();
@@ -47,6 +48,18 @@ t800::Message internal_in(Process& p, Channel& c) {
 }
 
 }  // namespace
+
+bool input_ready(const Channel& c) {
+  switch (c.kind) {
+    case Channel::Kind::internal:
+      return c.waiting_writer != nullptr;
+    case Channel::Kind::direct:
+      return c.link->input_pending(1 - c.writer_end);
+    case Channel::Kind::routed:
+      return !c.mailbox.empty();
+  }
+  return false;
+}
 
 const char* to_string(Channel::Kind kind) {
   switch (kind) {

@@ -1,7 +1,10 @@
 // Channels between processes, as the occam program would have had them:
-//  * internal: both ends on one transputer; a rendezvous, the second process to arrive copies (2w+19 cycles);
-//  * direct: the two ends on neighbouring transputers, alone on that link direction; the bytes move by DMA;
-//  * routed: anything else (not neighbours, or a link direction shared by several channels): store-and-forward
+//  * internal: both ends on one transputer; a rendezvous, the second process to arrive copies
+//  (2w+19 cycles);
+//  * direct: the two ends on neighbouring transputers, alone on that link direction; the bytes move
+//  by DMA;
+//  * routed: anything else (not neighbours, or a link direction shared by several channels):
+//  store-and-forward
 //    through software router processes on every transputer the message enters (router.cpp).
 #pragma once
 
@@ -28,7 +31,8 @@ struct Channel {
   Kind kind = Kind::internal;
   std::vector<int> path;  // nodes from `from` to `to`, for direct and routed channels
 
-  // internal rendezvous
+  // internal rendezvous; a reader in an ALT with this channel's guard enabled (occam's enbc)
+  Process* alting_reader = nullptr;
   Process* waiting_reader = nullptr;
   Process* waiting_writer = nullptr;
   t800::Message slot;
@@ -51,6 +55,8 @@ struct RoutedEnvelope {
 
 void send(Process& p, Channel& c, t800::Message m);
 t800::Message receive(Process& p, Channel& c);
+// Whether an input on the channel would not wait (an ALT's guard is ready).
+bool input_ready(const Channel& c);
 
 // The pieces routers are built from.
 void link_out(Process& p, t800::Link& link, int end, t800::Message m);
