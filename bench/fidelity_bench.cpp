@@ -409,12 +409,6 @@ int bench(const Options& o) {
 
 }  // namespace
 
-// workloads::table6_overrides comes with the elimination workload, which links libsystemc, and
-// libsystemc.so needs an sc_main; this program has its own main and never starts SystemC.
-int sc_main(int, char**) {
-  return 0;
-}
-
 int main(int argc, char** argv) {
   Options o;
   CLI::App app{

@@ -9,6 +9,7 @@
 #include "network/machine.hpp"
 #include "workloads/dynamics/robot_model.hpp"
 #include "workloads/params.hpp"
+#include "workloads/placement.hpp"
 #include "workloads/run/result_value.hpp"
 
 namespace workloads {
@@ -20,6 +21,7 @@ struct RunInputs {
   std::string kind;
   Params params;
   std::shared_ptr<const dynamics::RobotModel> robot;  // for workloads with a `robot` parameter
+  Placement placement;                                // the scene's [placement]
   // Where options.precision came from, said in the report: a default is stated, never silent.
   std::string precision_source = "the simulator's default";
 };
