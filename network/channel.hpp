@@ -34,8 +34,9 @@ struct Channel {
   // internal rendezvous; a reader in an ALT with this channel's guard enabled (occam's enbc)
   Process* alting_reader = nullptr;
   Process* waiting_reader = nullptr;
+  t800::Message* reader_destination = nullptr;  // where the waiting reader's message goes
   Process* waiting_writer = nullptr;
-  t800::Message slot;
+  t800::Message slot;  // the waiting writer's message
   sc_core::sc_event handed_over;
   // direct: the link and the writer's end of it
   t800::Link* link = nullptr;
