@@ -44,6 +44,12 @@ class Link : public sc_core::sc_module {
   // message.
   Message receive(int to);
 
+  // For ALT: a message for end `to` is on its way (its sender has started the output) and no input
+  // has taken it yet; the event fires whenever a sender starts one (U: a T800 link channel becomes
+  // ready when the first byte arrives, one data packet later).
+  bool input_pending(int to) const;
+  sc_core::sc_event& input_pending_event(int to) { return dir_[1 - to].submitted_event; }
+
   // Nothing queued, in flight or owed in either direction (an input may be armed, waiting): what
   // happens on the link from now on does not depend on its past.
   bool quiet() const;
@@ -101,7 +107,8 @@ class Link : public sc_core::sc_module {
     std::int64_t sent = 0, acked = 0;
     bool may_send = true;
     std::int64_t submitted = 0, completed = 0;  // message sequence numbers
-    sc_core::sc_event sent_event;
+    std::int64_t taken = 0;                     // messages an input has taken
+    sc_core::sc_event sent_event, submitted_event;
     // receiving DMA
     bool armed = false;
     bool ack_owed = false;

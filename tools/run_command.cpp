@@ -17,6 +17,7 @@
 #include "tools/scene.hpp"
 #include "tools/trace_files.hpp"
 #include "workloads/params.hpp"
+#include "workloads/registry.hpp"
 #include "workloads/run/run.hpp"
 
 namespace tools {
@@ -29,18 +30,23 @@ std::string default_text(const workloads::ParamValue& v) {
     std::string operator()(std::int64_t i) const { return std::to_string(i); }
     std::string operator()(double d) const { return fmt::format("{}", d); }
     std::string operator()(const std::string& t) const { return "\"" + t + "\""; }
-    std::string operator()(const std::vector<double>& l) const { return fmt::format("[{}]", fmt::join(l, ", ")); }
+    std::string operator()(const std::vector<double>& l) const {
+      return fmt::format("[{}]", fmt::join(l, ", "));
+    }
   };
   return std::visit(Visitor{}, v);
 }
 
-// The workload kinds and their parameters, from the catalogue (the one list), for `run --help`.
+// The workload kinds and their parameters, from the registry (workloads/registry.hpp), for `run
+// --help`.
 std::string workload_help() {
-  std::string out = "\nWorkload kinds (workload.kind) and their parameters (workload.NAME = default):\n";
+  std::string out =
+      "\nWorkload kinds (workload.kind) and their parameters (workload.NAME = default):\n";
   for (const workloads::WorkloadInfo& w : workloads::workload_catalog()) {
     out += fmt::format("\n  {}: {}\n", w.kind, w.summary);
     for (const workloads::ParamSpec& p : w.params)
-      out += fmt::format("    {} = {}  ({}) {}\n", p.name, default_text(p.default_value), to_string(p.type), p.help);
+      out += fmt::format("    {} = {}  ({}) {}\n", p.name, default_text(p.default_value),
+                         to_string(p.type), p.help);
   }
   return out;
 }
@@ -102,8 +108,9 @@ void add_run_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "Simulate one scene and print a report");
   cmd->footer(workload_help());
   cmd->add_option("scene", args->scene, "scene TOML file (configs/scenes/*.toml)")->required();
-  cmd->add_option("--set", args->overrides,
-                  "override a scene key, e.g. --set workload.bytes=4000 --set network.link_speed_mbps=10")
+  cmd->add_option(
+         "--set", args->overrides,
+         "override a scene key, e.g. --set workload.bytes=4000 --set network.link_speed_mbps=10")
       ->type_name("KEY=VALUE");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the text report");
   add_trace_options(*cmd, args->traces);

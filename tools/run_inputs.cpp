@@ -61,6 +61,7 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
   }
   in.kind = scene.workload_kind;
   in.params = scene.workload;
+  in.placement = scene.placement;
   // Files a workload names (robot, torque table, trajectory output) are relative to the scene that
   // names them, like the scene's topology file.
   const auto relative_to_scene = [&](const std::string& name) {

@@ -14,6 +14,7 @@
 #include "network/toml_limits.hpp"
 #include "network/toml_util.hpp"
 #include "network/topology_file.hpp"
+#include "workloads/registry.hpp"
 
 namespace tools {
 
@@ -28,6 +29,19 @@ using network::plural;
 using network::pos_of;
 using network::SourcePos;
 using network::type_name;
+
+// "P0, P1, ..." (at most 16 names, then how many more).
+std::string processor_names(const network::Topology& topology) {
+  std::vector<std::string> names;
+  for (const network::ProcessorSpec& p : topology.processors) {
+    if (names.size() == 16) {
+      names.push_back("and " + std::to_string(topology.processors.size() - 16) + " more");
+      break;
+    }
+    names.push_back(p.name);
+  }
+  return join(names);
+}
 
 std::string article(const std::string& noun) {
   return std::string("aeiou").find(noun.front()) == std::string::npos ? "a " : "an ";
@@ -151,6 +165,7 @@ class SceneReader {
   network::Topology generated(const toml::table& net, const toml::node& family) const;
   network::Topology from_file(const toml::node& path) const;
   void workload(Scene& scene) const;
+  void placement(Scene& scene) const;
   void calibration(Scene& scene) const;
   void calibration_values(const toml::table& t, Scene& scene) const;
   void fidelity(Scene& scene) const;
@@ -262,7 +277,8 @@ network::Topology SceneReader::topology(const toml::table* net, SourcePos& origi
 
 // network.processor, network.memory, network.wait_states: the type and memory placement of every
 // processor, generated or from a topology file (where they override its [[processor]] settings).
-void SceneReader::apply_processor_keys(const toml::table& net, t800::ProcessorConfig& config) const {
+void SceneReader::apply_processor_keys(const toml::table& net,
+                                       t800::ProcessorConfig& config) const {
   if (const toml::node* type = net.get("processor")) {
     const std::string name = text(*type, "network.processor");
     auto parsed_type = t800::parse_processor_type(name);
@@ -370,13 +386,14 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
         if (!ok)
           fail(value, key + " = \"" + s + "\" is not valid; choose one of " + join(spec.choices));
       }
-      // Processor-naming parameters must name a processor of this scene's network.
-      if ((spec.name == "from" || spec.name == "to") && !s.empty() && topology.find(s) < 0) {
-        std::vector<std::string> names;
-        for (const network::ProcessorSpec& p : topology.processors) names.push_back(p.name);
+      return s;
+    }
+    case ParamType::processor: {
+      if (!value.is_string()) wrong_type(value);
+      const std::string s = *value.value<std::string>();
+      if (!s.empty() && topology.find(s) < 0)
         fail(value, key + " = \"" + s + "\": there is no processor '" + s +
-                        "' in the topology; processors are " + join(names));
-      }
+                        "' in the topology; processors are " + processor_names(topology));
       return s;
     }
     case ParamType::real_list: {
@@ -522,10 +539,40 @@ void SceneReader::compiler(Scene& scene) const {
   scene.run_time_checks = boolean(t, "run_time_checks", scene.run_time_checks);
 }
 
+// [placement]: process = "P1", or group = ["P1", "P2", ...] (one per member) or "P1" (all), or
+// "group[2]" = "P3". Whether the processes exist is the program's to say when it is built; whether
+// the processors do is checked here.
+void SceneReader::placement(Scene& scene) const {
+  const toml::node* node = root_.get("placement");
+  if (!node) return;
+  const toml::table& t = table(*node, "placement");
+  for (auto&& [key, value] : t) {
+    workloads::PlacementEntry entry{std::string(key.str()), {}, pos(value)};
+    auto add = [&](const toml::node& name) {
+      if (!name.is_string())
+        fail(name, "'placement." + entry.process +
+                       "': expected a processor name or an array of them, got " + type_name(name));
+      const std::string processor = *name.value<std::string>();
+      if (scene.topology.find(processor) < 0)
+        fail(name, "placement." + entry.process + ": there is no processor '" + processor +
+                       "' in the topology; processors are " + processor_names(scene.topology));
+      entry.processors.push_back(processor);
+    };
+    if (const toml::array* list = value.as_array()) {
+      if (list->empty())
+        fail(value, "placement." + entry.process + " is empty: give at least one processor");
+      for (const toml::node& name : *list) add(name);
+    } else {
+      add(value);
+    }
+    scene.placement.push_back(std::move(entry));
+  }
+}
+
 Scene SceneReader::read() {
   check_keys(root_,
-             {"name", "description", "network", "topology", "workload", "calibration", "fidelity",
-              "compiler"},
+             {"name", "description", "network", "topology", "workload", "placement", "calibration",
+              "fidelity", "compiler"},
              "a scene");
   Scene scene;
   scene.file = file_;
@@ -541,6 +588,7 @@ Scene SceneReader::read() {
   scene.topology = topology(net, scene.origins["network"]);
   scene.link = link_config(net, scene.topology);
   workload(scene);
+  placement(scene);
   calibration(scene);
   fidelity(scene);
   compiler(scene);

@@ -10,6 +10,7 @@
 #include "network/topology.hpp"
 #include "t800/processor_config.hpp"
 #include "workloads/params.hpp"
+#include "workloads/placement.hpp"
 
 namespace tools {
 
@@ -22,6 +23,7 @@ struct Scene {
   std::string workload_kind;
   workloads::Params workload;  // validated against the workload's declared parameters
   std::vector<std::string> workload_defaults;  // the parameters the scene left at their defaults
+  workloads::Placement placement;              // [placement]: where the program's processes run
   // [calibration]: the occam code-efficiency factor (t800::CostModel) and how it was fitted. 1 =
   // uncalibrated.
   double code_efficiency = 1.0;

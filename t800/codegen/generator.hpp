@@ -1,6 +1,6 @@
 // Turns a recording into the T800 code the INMOS occam compiler would emit for it, following the
 // code shapes of "Transputer instruction set: a compiler writer's guide" (INMOS, 1988); the rules
-// are listed in docs/t800-timing.md, section "Generated code":
+// are listed in docs/compute-model.md, "From a kernel to T800 code":
 //   * each statement is compiled on its own: its expression evaluated on the three-deep FP stack,
 //     then stored; values live in memory between statements (occam keeps nothing in registers);
 //   * an intermediate result used more than once, or in another block (a later iteration), is a

@@ -1,7 +1,7 @@
 // The occam run-time library routines generated code calls, as T800 code: SIN and COS (software on
 // every transputer), and, for the T414 which has no FPU, the REAL32 and REAL64 arithmetic. Each is
-// an instruction sequence following the library's documented algorithm (docs/t800-timing.md,
-// "Run-time library"); their code occupies memory once per processor that uses them.
+// an instruction sequence following the library's documented algorithm (docs/compute-model.md,
+// "From a kernel to T800 code"); their code occupies memory once per processor that uses them.
 #pragma once
 
 #include <string>

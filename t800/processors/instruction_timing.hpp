@@ -1,6 +1,7 @@
 // Instruction timing as data: for each instruction a processor family executes, its cycles (on-chip
 // memory, typical figures of the INMOS tables), which unit does the work, and the memory words it
-// touches. One table per family (instruction_tables.cpp); docs/t800-timing.md cites every row.
+// touches. One table per family (instruction_tables.cpp); docs/t800-timing.md, sections
+// "Instructions" and "FPU", gives their sources.
 #pragma once
 
 #include <array>

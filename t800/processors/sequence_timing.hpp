@@ -1,7 +1,7 @@
 // Times a straight-line instruction sequence on one processor, instruction by instruction: the
 // integer unit (IU) and the FPU run concurrently by the rules of instruction_timing.hpp's Unit, and
 // every instruction fetch and data access is priced by where it lives (docs/t800-timing.md,
-// "Instruction-level timing").
+// "FPU overlap" and "Memory").
 //
 // Memory: on-chip RAM answers in the one cycle per access the instruction tables assume. An
 // external access holds the one external bus for MemoryView::external_cycles; data accesses of an

@@ -7,6 +7,7 @@
 #include "workloads/setting_error.hpp"
 
 #include "workloads/farm/farm_program.hpp"
+#include "workloads/registry.hpp"
 
 namespace workloads {
 
@@ -43,13 +44,14 @@ int master_of(const network::Topology& t) {
   return t.host_processor();
 }
 
-// One evaluation: the host sends (q, q̇) to the master, the farm computes D, C, c, h. Tp is the window the
-// scene chose (workload.tp_window); both windows are reported.
+// One evaluation: the host sends (q, q̇) to the master, the farm computes D, C, c, h. Tp is the
+// window the scene chose (workload.tp_window); both windows are reported.
 template <class S>
 class DynamicsFarm : public Workload {
  public:
   DynamicsFarm(const WorkloadContext& c)
-      : program_(require_robot(c), settings(c.params), master_of(c.topology), workers_of(c.topology)),
+      : program_(require_robot(c), settings(c.params), master_of(c.topology),
+                 workers_of(c.topology)),
         farm_window_(c.params.text("tp_window") == "farm"),
         precision_(c.params.text("precision")),
         q_(joint_vector(c.params, "q")),
@@ -68,11 +70,12 @@ class DynamicsFarm : public Workload {
     m.spawn(network::Machine::kHost, "host", t800::Priority::low, [&state](network::Process& p) {
       p.out(state, {2 * dynamics::kJoints * std::int64_t(sizeof(S)), {}, "state"});
     });
-    m.spawn(master_of(m.topology()), "master", t800::Priority::low, [this, &state](network::Process& p) {
-      p.in(state);
-      round_ = program_.evaluate(p, q_, qd_, data_);
-      program_.finish(p);
-    });
+    m.spawn(master_of(m.topology()), "master", t800::Priority::low,
+            [this, &state](network::Process& p) {
+              p.in(state);
+              round_ = program_.evaluate(p, q_, qd_, data_);
+              program_.finish(p);
+            });
   }
 
   ResultValue results(const network::Machine& m) const override {
@@ -83,7 +86,8 @@ class DynamicsFarm : public Workload {
     r.set("subtasks", std::int64_t(program_.work().tasks.size()));
     r.set("workers", std::int64_t(program_.workers().size()));
     const double origin = farm_window_ ? round_.farm_start_us : round_.start_us;
-    const double tp_us = farm_window_ ? round_.farm_end_us - round_.farm_start_us : round_.end_us - round_.start_us;
+    const double tp_us =
+        farm_window_ ? round_.farm_end_us - round_.farm_start_us : round_.end_us - round_.start_us;
     r.set("tp_window", farm_window_ ? "farm" : "evaluation");
     r.set("tp_us", tp_us);
     r.set("tp_ms", tp_us / 1000.0);
@@ -166,5 +170,39 @@ std::unique_ptr<Workload> make_dynamics_farm(const WorkloadContext& c) {
   if (c.params.text("precision") == "real64") return std::make_unique<DynamicsFarm<double>>(c);
   return std::make_unique<DynamicsFarm<float>>(c);
 }
+
+namespace {
+using T = ParamType;
+// clang-format off
+const Registration registered_dynamics_farm{
+    WorkloadInfo{"dynamics-farm",
+     "one forward-dynamics evaluation (D, C, h of the robot) farmed from a master to workers",
+     {
+         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+          {}, {}, {}},
+         {"model", T::text, std::string{"paper"},
+          "\"paper\" (64 subtasks, joint-6 Coriolis terms dropped) or \"full\" (every non-zero term)", {}, {},
+          {"paper", "full"}},
+         {"schedule", T::text, std::string{"static"},
+          "\"static\" (pre-computed list schedule), \"on-demand\" (workers ask for work) or \"explicit\" "
+          "(workload.allocation)",
+          {}, {}, {"static", "on-demand", "explicit"}},
+         {"allocation", T::text, std::string{}, "explicit allocation: \"P1: D11 D12 h2; P2: C1_23 ...\"", {},
+          {}, {}},
+         {"precision", T::text, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {},
+          {"real32", "real64"}},
+         {"tp_window", T::text, std::string{"farm"},
+          "what Tp covers: \"farm\" (first input sent to last result received) or \"evaluation\" (state "
+          "received to D, C, c, h assembled, with the master's sin/cos and assembly)",
+          {}, {}, {"farm", "evaluation"}},
+         {"buffer", T::integer, std::int64_t{2}, "on-demand: subtasks in flight per worker (1 = no buffering)",
+          1, 8, {}},
+         {"q", T::real_list, std::vector<double>{0.1, 0.2, 0.5, 0.3, 0.4, 0.5},
+          "joint positions (rad, q3 in m); default: the README's reference state", {}, {}, {}},
+         {"qd", T::real_list, std::vector<double>{0.1, -0.2, 0.05, 0.3, -0.1, 0.2}, "joint rates", {}, {}, {}},
+     }},
+    make_dynamics_farm};
+// clang-format on
+}  // namespace
 
 }  // namespace workloads

@@ -124,8 +124,8 @@ ResultValue setting_value(const RunSetting& s) {
 }  // namespace
 
 std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& in) {
-  std::unique_ptr<Workload> workload =
-      make_workload(in.kind, WorkloadContext{in.params, in.topology, in.robot.get()});
+  std::unique_ptr<Workload> workload = make_workload(
+      in.kind, WorkloadContext{in.params, in.topology, in.robot.get(), &in.placement});
   workload->build(machine);
   return workload;
 }

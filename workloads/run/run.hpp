@@ -9,6 +9,7 @@
 #include "network/machine.hpp"
 #include "workloads/dynamics/robot_model.hpp"
 #include "workloads/params.hpp"
+#include "workloads/placement.hpp"
 #include "workloads/run/result_value.hpp"
 
 namespace workloads {
@@ -20,6 +21,7 @@ struct RunInputs {
   std::string kind;
   Params params;
   std::shared_ptr<const dynamics::RobotModel> robot;  // for workloads with a `robot` parameter
+  Placement placement;                                // the scene's [placement]
   // Where options.precision came from, said in the report: a default is stated, never silent.
   std::string precision_source = "the simulator's default";
 };
@@ -39,9 +41,9 @@ struct RunSetting {
 struct FootprintReport {
   int on_chip_bytes = 0;
   int reserved_bytes = 0, workspace_bytes = 0, data_bytes = 0, code_bytes = 0, library_bytes = 0;
-  int external_bytes = 0;               // of those, in external memory
-  std::vector<std::string> off_chip;    // the regions placed in external memory
-  int external_access_cycles = 0;       // an external access, wait states included
+  int external_bytes = 0;             // of those, in external memory
+  std::vector<std::string> off_chip;  // the regions placed in external memory
+  int external_access_cycles = 0;     // an external access, wait states included
 };
 
 struct ProcessorReport {
@@ -73,9 +75,10 @@ struct RunReport {
   double simulated_us = 0;
   double wall_s = 0;
   RunSetting setting;
-  network::Fidelity fidelity;  // what the run modelled and skipped
+  network::Fidelity fidelity;   // what the run modelled and skipped
   bool run_time_checks = true;  // compiled into the generated code
-  std::uint64_t events = 0;  // SystemC delta cycles: one per batch of process activations at one time
+  std::uint64_t events =
+      0;  // SystemC delta cycles: one per batch of process activations at one time
   std::vector<ProcessorReport> processors;
   std::vector<LinkReport> links;
   std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
@@ -95,8 +98,8 @@ struct RunReport {
 RunReport run(const RunInputs& inputs);
 
 class Workload;
-// What run() does before running: the workload of `inputs` built on `machine` (its processes placed,
-// its code declared). Kept alive while the machine is used.
+// What run() does before running: the workload of `inputs` built on `machine` (its processes
+// placed, its code declared). Kept alive while the machine is used.
 std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& inputs);
 
 }  // namespace workloads

@@ -21,6 +21,7 @@
 #include "workloads/integration/integrators.hpp"
 #include "workloads/integration/torque.hpp"
 #include "workloads/pipeline/pipeline_program.hpp"
+#include "workloads/registry.hpp"
 #include "workloads/run/operation_mix.hpp"
 #include "workloads/run/output_file.hpp"
 
@@ -218,8 +219,8 @@ class Trajectory : public Workload {
     occam::declare(next.q.data(), dynamics::kJoints, "q.next");
     occam::declare(next.qd.data(), dynamics::kJoints, "qdot.next");
     const dynamics::JointVectorT<C> zero = dynamics::JointVectorT<C>::Zero();
-    const integration::State<C> result =
-        integration::step(s_.method, x, C(S(s_.dt)), [&](const auto&, const auto&) { return zero; });
+    const integration::State<C> result = integration::step(
+        s_.method, x, C(S(s_.dt)), [&](const auto&, const auto&) { return zero; });
     for (int i = 0; i < dynamics::kJoints; ++i) {
       next.q(i) = result.q(i);
       next.qd(i) = result.qd(i);
@@ -424,7 +425,8 @@ class Trajectory : public Workload {
     times.dynamics_us += us_between(round_start, sc_core::sc_time_stamp());
     Vec rhs;
     const dynamics::JointVectorT<C> tau = counted_torque(t, wide(q), wide(qd));
-    const dynamics::JointVectorT<C> r = tau - data_.c.template cast<C>() - data_.h.template cast<C>();
+    const dynamics::JointVectorT<C> r =
+        tau - data_.c.template cast<C>() - data_.h.template cast<C>();
     for (int i = 0; i < dynamics::kJoints; ++i) rhs(i) = r(i).value();
     const sc_core::sc_time before = sc_core::sc_time_stamp();
     p.compute(rhs_, "right-hand side");
@@ -631,5 +633,55 @@ std::unique_ptr<Workload> make_trajectory(const WorkloadContext& c) {
     return std::make_unique<Trajectory<double>>(c, std::move(s));
   return std::make_unique<Trajectory<float>>(c, std::move(s));
 }
+
+namespace {
+using T = ParamType;
+// clang-format off
+const Registration registered_trajectory{
+    WorkloadInfo{"trajectory",
+     "forward dynamics end to end: the dynamics farm, the elimination pipeline and an integrator on the farm's "
+     "master, step by step (workloads/trajectory/trajectory.hpp)",
+     {
+         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+          {}, {}, {}},
+         {"model", T::text, std::string{"full"},
+          "dynamics model: \"full\" (every non-zero term) or \"paper\" (64 subtasks, joint-6 Coriolis terms "
+          "dropped)",
+          {}, {}, {"paper", "full"}},
+         {"precision", T::text, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {},
+          {"real32", "real64"}},
+         {"m", T::integer, std::int64_t{3}, "level-2 processors E1..Em of the pipeline", 1, 64, {}},
+         {"pivoting", T::text, std::string{"simple"},
+          "\"simple\" (the paper: interchange only when the pivot is unusable) or \"partial\"", {}, {},
+          {"simple", "partial"}},
+         {"pivot_threshold", T::real, 0.0,
+          "a pivot p is unusable when |p| <= pivot_threshold * max|a_ij|; 0 = only an exact zero", 0.0, 1.0, {}},
+         {"integrator", T::text, std::string{"rk4"},
+          "\"rk4\" (4 evaluations per step) or \"semi-implicit-euler\" (1 evaluation per step)", {}, {},
+          {"rk4", "semi-implicit-euler"}},
+         {"steps", T::integer, std::int64_t{100}, "integrator steps", 1, 1e7, {}},
+         {"dt", T::real, 1e-3, "step, s", 1e-9, 10.0, {}},
+         {"torque", T::text, std::string{"zero"},
+          "\"zero\" (passive), \"csv\" (workload.torque_csv) or \"pd\" (kp, kd to target)", {}, {},
+          {"zero", "csv", "pd"}},
+         {"torque_csv", T::text, std::string{},
+          "torque table, relative to the scene: header t,tau1,...,tau6, then rows with t increasing", {}, {}, {}},
+         {"interpolation", T::text, std::string{"linear"},
+          "torque table between rows: \"linear\" or \"hold\" (zero-order hold); held beyond its ends", {}, {},
+          {"linear", "hold"}},
+         {"kp", T::real_list, std::vector<double>{100.0}, "PD proportional gains, one or six values", {}, {}, {}},
+         {"kd", T::real_list, std::vector<double>{20.0}, "PD derivative gains, one or six values", {}, {}, {}},
+         {"target", T::real_list, std::vector<double>{0.0, 0.0, 0.5, 0.0, 0.0, 0.0}, "PD target q", {}, {}, {}},
+         {"q", T::real_list, std::vector<double>{0.1, 0.2, 0.5, 0.3, 0.4, 0.5}, "initial joint positions", {}, {},
+          {}},
+         {"qd", T::real_list, std::vector<double>{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, "initial joint rates", {}, {}, {}},
+         {"stop_at_limits", T::flag, false,
+          "stop at the first step that leaves the joint limits (reported either way, never clamped)", {}, {}, {}},
+         {"output_csv", T::text, std::string{},
+          "trajectory CSV (t, q, qd, tau, step_us and its split), relative to the scene; empty = none", {}, {}, {}},
+     }},
+    make_trajectory};
+// clang-format on
+}  // namespace
 
 }  // namespace workloads
