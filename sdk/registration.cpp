@@ -1,5 +1,6 @@
 #include <stdexcept>
 
+#include "sdk/plugin_loader.hpp"
 #include "sdk/program_workload.hpp"
 #include "t800sim/workload.hpp"
 #include "workloads/registry.hpp"
@@ -7,15 +8,19 @@
 namespace t800sim {
 
 void register_workload(WorkloadSpec spec) {
-  if (!spec.make) throw std::invalid_argument("workload kind " + spec.kind + " has no factory");
-  auto make = std::move(spec.make);
-  const std::string kind = spec.kind;
-  workloads::register_kind({spec.kind, spec.summary, std::move(spec.params)},
-                           [make, kind](const workloads::WorkloadContext& context) {
-                             const Network network(context.topology);
-                             return std::make_unique<detail::ProgramWorkload>(
-                                 kind, make(context.params, network), context);
-                           });
+  try {
+    if (!spec.make) throw std::invalid_argument("workload kind " + spec.kind + " has no factory");
+    auto make = std::move(spec.make);
+    const std::string kind = spec.kind;
+    workloads::register_kind({spec.kind, spec.summary, std::move(spec.params)},
+                             [make, kind](const workloads::WorkloadContext& context) {
+                               const Network network(context.topology);
+                               return std::make_unique<detail::ProgramWorkload>(
+                                   kind, make(context.params, network), context);
+                             });
+  } catch (const std::invalid_argument& e) {
+    if (!detail::note_plugin_registration_error(e.what())) throw;
+  }
 }
 
 Param integer_param(std::string name, std::int64_t fallback, std::string help, double min,

@@ -6,22 +6,28 @@
 
 namespace tools {
 
+CommandError command_error(const std::exception_ptr& thrown) {
+  try {
+    std::rethrow_exception(thrown);
+  } catch (const network::ConfigError& e) {
+    return {kExitBadInput, e.what()};  // already "file:line:column: error: ..."
+  } catch (const std::invalid_argument& e) {
+    return {kExitBadInput, network::bounded_message("error: " + std::string(e.what()))};
+  } catch (const std::filesystem::filesystem_error& e) {
+    return {kExitBadInput, network::bounded_message("error: " + std::string(e.what()))};
+  } catch (const std::exception& e) {
+    return {kExitFailure, network::bounded_message("error: " + std::string(e.what()))};
+  }
+}
+
 void run_command(const std::function<int()>& body) {
   int code = kExitOk;
   try {
     code = body();
-  } catch (const network::ConfigError& e) {
-    std::cerr << e.what() << "\n";  // already "file:line:column: error: ..."
-    code = kExitBadInput;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << network::bounded_message("error: " + std::string(e.what())) << "\n";
-    code = kExitBadInput;
-  } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << network::bounded_message("error: " + std::string(e.what())) << "\n";
-    code = kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << network::bounded_message("error: " + std::string(e.what())) << "\n";
-    code = kExitFailure;
+  } catch (const std::exception&) {
+    const CommandError error = command_error(std::current_exception());
+    std::cerr << error.message << "\n";
+    code = error.code;
   }
   throw CommandExit{code};
 }

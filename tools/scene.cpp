@@ -14,6 +14,7 @@
 #include "network/toml_limits.hpp"
 #include "network/toml_util.hpp"
 #include "network/topology_file.hpp"
+#include "sdk/plugin_loader.hpp"
 #include "workloads/registry.hpp"
 
 namespace tools {
@@ -165,6 +166,7 @@ class SceneReader {
   network::Topology generated(const toml::table& net, const toml::node& family) const;
   network::Topology from_file(const toml::node& path) const;
   void workload(Scene& scene) const;
+  void plugin(const toml::node& path) const;
   void placement(Scene& scene) const;
   void calibration(Scene& scene) const;
   void calibration_values(const toml::table& t, Scene& scene) const;
@@ -414,10 +416,25 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
   return {};
 }
 
+// workload.plugin, relative to the scene file: its kinds exist once it is loaded.
+void SceneReader::plugin(const toml::node& path) const {
+  const std::string name = text(path, "workload.plugin");
+  fs::path resolved(name);
+  if (resolved.is_relative()) resolved = fs::path(file_).parent_path() / resolved;
+  try {
+    t800sim::detail::load_plugin(resolved.string());
+  } catch (const t800sim::detail::PluginError& e) {
+    fail(path, std::string("workload.plugin: ") + e.what());
+  }
+}
+
 void SceneReader::workload(Scene& scene) const {
+  const toml::node* node = root_.get("workload");
+  const toml::table* workload_table = node ? node->as_table() : nullptr;
+  if (const toml::node* path = workload_table ? workload_table->get("plugin") : nullptr)
+    plugin(*path);
   std::vector<std::string> kinds;
   for (const workloads::WorkloadInfo& w : workloads::workload_catalog()) kinds.push_back(w.kind);
-  const toml::node* node = root_.get("workload");
   if (!node) fail(root_, "no [workload] table: add one with kind = one of " + join(kinds));
   const toml::table& t = table(*node, "workload");
   const toml::node* kind = t.get("kind");
@@ -427,7 +444,7 @@ void SceneReader::workload(Scene& scene) const {
   if (!info)
     fail(*kind,
          "unknown workload kind '" + scene.workload_kind + "'; valid kinds are " + join(kinds));
-  std::vector<std::string> valid{"kind"};
+  std::vector<std::string> valid{"kind", "plugin"};
   for (const workloads::ParamSpec& p : info->params) valid.push_back(p.name);
   check_keys(t, valid, "[workload] of kind " + info->kind);
   scene.origins["workload"] = pos(t);

@@ -69,8 +69,9 @@ Param processor_param(std::string name, std::string help);
       (::t800sim::register_workload(T800SIM_DETAIL_CAT(t800sim_workload_, id)()), true); \
   static ::t800sim::WorkloadSpec T800SIM_DETAIL_CAT(t800sim_workload_, id)()
 
-// Once per plugin: the SDK version the plugin was compiled against, checked when it is loaded.
-#define T800SIM_PLUGIN()                                                                       \
-  extern "C" __attribute__((visibility("default"))) const char* t800sim_plugin_sdk_version() { \
-    return T800SIM_VERSION;                                                                    \
-  }
+// Once per plugin, at namespace scope: records the SDK version the plugin was compiled against, in
+// a string t800sim reads from the file before it loads the plugin (a plugin of another version is
+// refused and none of its code runs).
+#define T800SIM_PLUGIN()                                                                \
+  extern "C" __attribute__((used, visibility("default"))) const char t800sim_plugin[] = \
+      T800SIM_PLUGIN_MARKER T800SIM_VERSION
