@@ -55,7 +55,8 @@ install(TARGETS t800_code t800 network numerics workloads t800sim_sdk programs r
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT t800simTargets NAMESPACE t800sim:: DESTINATION ${T800SIM_PACKAGE_DIR})
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/t800simConfig.cmake.in
-                              ${PROJECT_BINARY_DIR}/t800simConfig.cmake INSTALL_DESTINATION ${T800SIM_PACKAGE_DIR})
+                              ${PROJECT_BINARY_DIR}/t800simConfig.cmake INSTALL_DESTINATION ${T800SIM_PACKAGE_DIR}
+                              PATH_VARS CMAKE_INSTALL_BINDIR)
 # A plugin must be built against the SDK of the t800sim that loads it (T800SIM_PLUGIN records the
 # version): only the exact version is compatible.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/t800simConfigVersion.cmake COMPATIBILITY ExactVersion)

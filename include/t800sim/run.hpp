@@ -28,3 +28,7 @@ struct SceneRun {
 SceneRun run_scene(const std::string& scene_file, const std::vector<std::string>& overrides = {});
 
 }  // namespace t800sim
+
+// The executable's entry point: libsystemc.so provides main() and calls sc_main (declared here as
+// SystemC declares it, so that a definition without SystemC's headers links).
+extern "C" int sc_main(int argc, char* argv[]);
