@@ -36,21 +36,22 @@ class Commstime : public Program {
   Commstime(std::int64_t loops, std::int64_t warmup, bool par_delta)
       : loops_(loops), warmup_(warmup), par_delta_(par_delta) {}
 
-  void build(Builder& b) override {
-    const auto a = b.channel<INT>("a", "prefix", "delta");
-    const auto c = b.channel<INT>("c", "delta", "successor");
-    const auto d = b.channel<INT>("d", "delta", "consume");
-    const auto s = b.channel<INT>("b", "successor", "prefix");
+  // comstime.occ's channels a, b, c, d and its four processes.
+  void build(Builder& net) override {
+    const auto a = net.channel<INT>("a", "prefix", "delta");
+    const auto b = net.channel<INT>("b", "successor", "prefix");
+    const auto c = net.channel<INT>("c", "delta", "successor");
+    const auto d = net.channel<INT>("d", "delta", "consume");
     const std::int64_t n = warmup_ + loops_;
-    b.process("prefix", [=](Process& p) {
+    net.process("prefix", [=](Process& p) {
       p.out(a, 0);
       for (std::int64_t i = 1; i < n; ++i) {
-        p.out(a, p.in(s));
+        p.out(a, p.in(b));
         p.compute(loop_jump(), "WHILE TRUE");
       }
-      p.in(s);
+      p.in(b);
     });
-    b.process("delta", [=](Process& p) {
+    net.process("delta", [=](Process& p) {
       for (std::int64_t i = 0; i < n; ++i) {
         const INT x = p.in(a);
         if (par_delta_)
@@ -62,15 +63,15 @@ class Commstime : public Program {
         p.compute(loop_jump(), "WHILE TRUE");
       }
     });
-    b.process("successor", [=](Process& p) {
+    net.process("successor", [=](Process& p) {
       for (std::int64_t i = 0; i < n; ++i) {
         const INT x = p.in(c);
         p.compute(add_one(), "x + 1");
-        p.out(s, x + 1);
+        p.out(b, x + 1);
         p.compute(loop_jump(), "WHILE TRUE");
       }
     });
-    b.process("consume", [=](Process& p) {
+    net.process("consume", [=](Process& p) {
       for (std::int64_t i = 0; i < warmup_; ++i) {
         p.in(d);
         p.compute(loop_end(), "SEQ i = 0 FOR warm.up");
