@@ -199,7 +199,7 @@ TEST(Scene, UnknownKeysAnywhere) {
   EXPECT_TRUE(bad_scene(text, 4, 1, {"unknown key 'speed' in [network]", "link_speed_mbps"}));
   EXPECT_TRUE(bad_scene(
       pingpong("byte = 3\n"), 8, 1,
-      {"unknown key 'byte' in [workload] of kind pingpong", "kind, bytes, iterations, from, to"}));
+      {"unknown key 'byte' in [workload] of kind pingpong", "kind, plugin, bytes, iterations, from, to"}));
 }
 
 TEST(Scene, WorkloadKind) {
