@@ -49,10 +49,16 @@ template <class T>
 struct Block {};
 template <class... Items>
 struct Sequential {};  // Items; ...
-// One case of a variant protocol: its items (none for a bare tag).
+// protocol<P>: value_type (what a program sends and receives), bytes(v) (the bytes on the wire),
+// name() (as occam would write it), send/receive (the communications, in occam's order).
+template <class P, class Enable = void>
+struct protocol;
+
+// One case of a variant protocol: the values of its items (none for a bare tag), as a sequential
+// protocol of the same items holds them (a counted array's is a std::vector).
 template <class... Items>
 struct Case {
-  std::tuple<Items...> items;
+  std::tuple<typename protocol<Items>::value_type...> items;
 };
 template <class... Cases>
 struct Variant {};  // CASE ...
@@ -92,11 +98,6 @@ const char* primitive_name() {
 }
 
 }  // namespace detail
-
-// protocol<P>: value_type (what a program sends and receives), bytes(v) (the bytes on the wire),
-// name() (as occam would write it), send/receive (the communications, in occam's order).
-template <class P, class Enable = void>
-struct protocol;
 
 template <class T>
 struct protocol<T, std::enable_if_t<detail::is_primitive<T>>> {
@@ -218,7 +219,7 @@ struct protocol<Variant<Cases...>> {
   static std::string name() {
     std::string s = "CASE";
     std::size_t tag = 0;
-    ((s += (tag ? " | " : " ") + std::to_string(tag++) + ": " + protocol<Cases>::name()), ...);
+    ((s += (tag ? " | " : " ") + std::to_string(tag) + ": " + protocol<Cases>::name(), ++tag), ...);
     return s;
   }
   static void send(detail::Wire& w, const value_type& v) {
