@@ -9,7 +9,7 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
+#include <list>
 #include <string>
 #include <vector>
 
@@ -30,18 +30,23 @@ struct Channel {
   int from = 0, to = 0;  // node indices (the host is Machine::kHost)
   Kind kind = Kind::internal;
   std::vector<int> path;  // nodes from `from` to `to`, for direct and routed channels
+  // The processes that last output and input on it (or are trying to), for deadlock reports.
+  Process* last_writer = nullptr;
+  Process* last_reader = nullptr;
 
   // internal rendezvous; a reader in an ALT with this channel's guard enabled (occam's enbc)
   Process* alting_reader = nullptr;
   Process* waiting_reader = nullptr;
+  t800::Message* reader_destination = nullptr;  // where the waiting reader's message goes
   Process* waiting_writer = nullptr;
-  t800::Message slot;
+  t800::Message slot;  // the waiting writer's message
   sc_core::sc_event handed_over;
   // direct: the link and the writer's end of it
   t800::Link* link = nullptr;
   int writer_end = 0;
-  // routed: messages delivered at `to` by its router, waiting for the reader
-  std::deque<t800::Message> mailbox;
+  // routed: messages delivered at `to` by its router, waiting for the reader (a list: an empty one
+  // allocates nothing, t800/link.hpp)
+  std::list<t800::Message> mailbox;
   sc_core::sc_event mail;
 };
 

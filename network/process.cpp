@@ -50,13 +50,21 @@ void Process::reschedule() {
 
 void Process::out(Channel& channel, t800::Message message) {
   set_status("out on channel " + channel.name);
+  channel.last_writer = this;
+  channel_ = &channel;
+  outputting_ = true;
   send(*this, channel, std::move(message));
+  channel_ = nullptr;
   set_status("running");
 }
 
 t800::Message Process::in(Channel& channel) {
   set_status("in on channel " + channel.name);
+  channel.last_reader = this;
+  channel_ = &channel;
+  outputting_ = false;
   t800::Message m = receive(*this, channel);
+  channel_ = nullptr;
   set_status("running");
   return m;
 }
@@ -73,9 +81,11 @@ void Process::par(const std::vector<Body>& branches) {
                                        }));
   }
   set_status("waiting for its parallel branches");
+  branches_ = children;
   deschedule();
   for (Process* child : children)
     while (!child->ended()) sc_core::wait(child->ended_event());
+  branches_.clear();
   reschedule();
   set_status("running");
 }

@@ -72,6 +72,11 @@ class Process {
   // What the process is doing, for deadlock reports.
   void set_status(std::string status) { status_ = std::move(status); }
   const std::string& status() const { return status_; }
+  // What it waits on, for the cycle of waits in a deadlock report (network/wait_cycle.hpp): the channel
+  // of the `in` or `out` it is in (null otherwise), or the PAR branches it waits for.
+  const Channel* channel() const { return channel_; }
+  bool outputting() const { return outputting_; }
+  const std::vector<Process*>& branches() const { return branches_; }
   // Ends the process's life cycle (called by the machine once the body returns).
   void mark_ended();
   bool ended() const { return ended_; }
@@ -86,6 +91,9 @@ class Process {
   std::string status_ = "not started";
   bool ended_ = false;
   bool daemon_ = false;
+  const Channel* channel_ = nullptr;
+  bool outputting_ = false;
+  std::vector<Process*> branches_;
   sc_core::sc_event ended_event_;
   sc_core::sc_event alt_event_;
 };

@@ -186,6 +186,10 @@ void validate(const Topology& topology) {
   if (topology.processors.empty())
     throw ConfigError(SourcePos{topology.source, 0, 0},
                       "the topology has no processors: add at least one [[processor]]");
+  if (topology.processors.size() > std::size_t(kMaxProcessors))
+    throw ConfigError(topology.processors[std::size_t(kMaxProcessors)].where,
+                      "the topology has " + std::to_string(topology.processors.size()) +
+                          " processors; at most " + std::to_string(kMaxProcessors) + " are simulated");
   check_names(topology);
   check_host(topology);
   for (const Connection& c : topology.connections) check_connection(topology, c);

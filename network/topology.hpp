@@ -54,8 +54,14 @@ struct Topology {
   int host_processor() const { return host ? host->processor : -1; }
 };
 
+// The largest network simulated: each transputer costs some 60 KB of host memory and about five SystemC
+// threads, whose stacks the host maps one by one (a process may hold some 65,000 maps), and routes are
+// found by search; 40,000 transputers ran out of maps (issue 12). Generated families stop here too.
+constexpr int kMaxProcessors = 1024;
+
 // Structural checks shared by files and generators: duplicate names, link index 0..3, a link end used
-// twice (including by the host), self-loops, speeds, processors unreachable from the host.
+// twice (including by the host), self-loops, speeds, processors unreachable from the host, more than
+// kMaxProcessors.
 // Throws ConfigError at the offending item's `where`.
 void validate(const Topology& topology);
 

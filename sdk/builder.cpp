@@ -52,18 +52,6 @@ ProcessDecl& Builder::add(const std::string& name, int n, bool group, Process::I
   return processes_.back();
 }
 
-std::string Builder::member(const std::string& process, int i, int n) const {
-  for (const ProcessDecl& p : processes_)
-    if (p.name == process && p.group) {
-      if (p.count != n)
-        throw std::invalid_argument("process group " + process + " has " + std::to_string(p.count) +
-                                    " members; a channel array of " + std::to_string(n) +
-                                    " cannot be joined to it");
-      return process + "[" + std::to_string(i) + "]";
-    }
-  return process;
-}
-
 detail::ChannelSlot* Builder::declare(const std::string& name, const std::string& protocol,
                                       const std::string& from, const std::string& to) {
   end(name, protocol, from, true);
@@ -77,7 +65,7 @@ detail::ChannelSlot* Builder::end(const std::string& name, const std::string& pr
   for (detail::ChannelSlot& c : channels_)
     if (c.name == name) slot = &c;
   if (!slot) {
-    channels_.push_back({name, protocol, {}, {}, nullptr});
+    channels_.push_back({name, protocol, {}, {}, -1, 0, nullptr});
     slot = &channels_.back();
   }
   std::string& owner = writer ? slot->writer : slot->reader;

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "network/machine.hpp"
+#include "workloads/setting_error.hpp"
 
 namespace t800sim::detail {
 
@@ -20,6 +21,8 @@ ProgramWorkload::ProgramWorkload(std::string kind, std::unique_ptr<Program> prog
 void ProgramWorkload::build(network::Machine& machine) {
   try {
     program_->build(builder_);
+  } catch (const workloads::SettingError& e) {
+    throw workloads::SettingError(e.keys(), "workload " + kind_ + ": " + e.what());
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("workload " + kind_ + ": " + e.what());
   }
@@ -52,6 +55,22 @@ const PlacedProcess& ProgramWorkload::placed(const std::string& process,
   throw std::invalid_argument(message + ", which the program does not declare");
 }
 
+// Channel i of an array named after a group of as many processes joins member i.
+std::string ProgramWorkload::end_process(const std::string& process,
+                                         const ChannelSlot& slot) const {
+  if (slot.index < 0) return process;
+  for (const ProcessDecl& d : builder_.declared_processes())
+    if (d.group && d.name == process) {
+      if (d.count != slot.array)
+        throw std::invalid_argument("workload " + kind_ + ": channel " + slot.name + " is one of " +
+                                    std::to_string(slot.array) + ", joined to process group " +
+                                    process + " of " + std::to_string(d.count) +
+                                    ": an array is joined to a group of its size");
+      return process + "[" + std::to_string(slot.index) + "]";
+    }
+  return process;
+}
+
 void ProgramWorkload::join_channels(network::Machine& machine) {
   for (ChannelSlot& slot : builder_.declared_channels()) {
     if (slot.writer.empty() || slot.reader.empty())
@@ -59,8 +78,8 @@ void ProgramWorkload::join_channels(network::Machine& machine) {
                                   (slot.writer.empty()
                                        ? "no writer (its reader is " + slot.reader + ")"
                                        : "no reader (its writer is " + slot.writer + ")"));
-    const PlacedProcess& from = placed(slot.writer, slot.name);
-    const PlacedProcess& to = placed(slot.reader, slot.name);
+    const PlacedProcess& from = placed(end_process(slot.writer, slot), slot.name);
+    const PlacedProcess& to = placed(end_process(slot.reader, slot), slot.name);
     try {
       slot.impl = &machine.channel(slot.name, from.node, to.node);
     } catch (const std::runtime_error& e) {

@@ -23,6 +23,7 @@ class ProgramWorkload : public workloads::Workload {
 
  private:
   void join_channels(network::Machine& machine);
+  std::string end_process(const std::string& process, const ChannelSlot& slot) const;
   const PlacedProcess& placed(const std::string& process, const std::string& channel) const;
 
   std::string kind_;

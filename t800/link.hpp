@@ -19,7 +19,7 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
+#include <list>
 #include <string>
 
 #include <systemc>
@@ -98,9 +98,12 @@ class Link : public sc_core::sc_module {
     sc_core::sc_time start;
   };
 
+  // Message queues are lists: an empty std::deque already holds a 512-byte block, and a 1024-transputer
+  // network has thousands of link directions, almost all of them idle (issue 12: host memory per
+  // transputer).
   struct Direction {
     // sending DMA
-    std::deque<Message> queue;
+    std::list<Message> queue;
     std::int64_t sent = 0, acked = 0;
     bool may_send = true;
     std::int64_t submitted = 0, completed = 0;  // message sequence numbers
@@ -114,7 +117,7 @@ class Link : public sc_core::sc_module {
     bool receiver_counted = false;
     Message incoming;
     std::int64_t received = 0;
-    std::deque<Message> delivered;
+    std::list<Message> delivered;
     sc_core::sc_event delivered_event;
     // wire of this direction's data, and its pending acknowledges for the other direction
     int acks_pending = 0;

@@ -1,3 +1,6 @@
+#include <unistd.h>
+
+#include <cmath>
 #include <iostream>
 
 #include <fmt/format.h>
@@ -9,6 +12,7 @@
 #include "network/config_error.hpp"
 #include "tools/commands.hpp"
 #include "tools/report_format.hpp"
+#include "tools/run_progress.hpp"
 #include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 #include "tools/trace_files.hpp"
@@ -52,15 +56,49 @@ struct RunArgs {
   std::vector<std::string> overrides;
   bool json = false;
   TraceFiles traces;
+  double max_sim_s = 0, max_wall_s = 0;
 };
 
+void check_limit(double seconds, const char* flag) {
+  if (!(seconds >= 0) || !std::isfinite(seconds))
+    throw std::invalid_argument(std::string(flag) + " " + fmt::format("{}", seconds) +
+                                ": give a number of seconds, 0 for no limit");
+}
+
+std::string limit_text(const RunArgs& args, const workloads::RunReport& report) {
+  return report.limit == network::Limit::sim_time
+             ? fmt::format("--max-sim-time {} s", args.max_sim_s)
+             : fmt::format("--max-wall-time {} s", args.max_wall_s);
+}
+
 int run_scene(const RunArgs& args) {
+  check_limit(args.max_sim_s, "--max-sim-time");
+  check_limit(args.max_wall_s, "--max-wall-time");
   const Scene scene = load_scene(args.scene, args.overrides);
+  workloads::RunInputs inputs = inputs_from(scene, args.traces.any());
   check_trace_files(args.traces);
-  const workloads::RunReport report = workloads::run(inputs_from(scene, args.traces.any()));
+  inputs.options.max_sim_s = args.max_sim_s;
+  inputs.options.max_wall_s = args.max_wall_s;
+  RunProgress progress(isatty(STDERR_FILENO));
+  inputs.options.progress = [&progress](std::int64_t done, std::int64_t total) {
+    progress.update(done, total);
+  };
+  const workloads::RunReport report = workloads::run(inputs);
+  progress.end();
   std::cout << (args.json ? format_json(report) : format_text(report)) << std::flush;
   write_traces(report, args.traces);  // also after a deadlock: the trace shows who waited for whom
-  return report.blocked.empty() ? kExitOk : kExitFailure;
+  if (!report.blocked.empty()) return kExitFailure;
+  if (report.limit != network::Limit::none) {
+    std::cerr << fmt::format("error: stopped by {} at simulated time {:.3f} us, before the run ended: "
+                             "no workload results\n",
+                             limit_text(args, report), report.simulated_us);
+    return kExitLimit;
+  }
+  if (!report.failure.empty()) {
+    std::cerr << "error: the run failed: " << report.failure << "\n";
+    return kExitBadResult;
+  }
+  return kExitOk;
 }
 
 }  // namespace
@@ -76,6 +114,12 @@ void add_run_command(CLI::App& app) {
       ->type_name("KEY=VALUE");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the text report");
   add_trace_options(*cmd, args->traces);
+  cmd->add_option("--max-sim-time", args->max_sim_s,
+                  "stop the run after this many seconds of simulated time (exit code 4; 0: no limit)")
+      ->type_name("SECONDS");
+  cmd->add_option("--max-wall-time", args->max_wall_s,
+                  "stop the run after this many seconds of host time (exit code 4; 0: no limit)")
+      ->type_name("SECONDS");
   cmd->callback([args] { run_command([&] { return run_scene(*args); }); });
 }
 

@@ -11,8 +11,10 @@
 #include <set>
 
 #include "network/families.hpp"
+#include "network/toml_limits.hpp"
 #include "network/toml_util.hpp"
 #include "network/topology_file.hpp"
+#include "t800/cost_model.hpp"
 #include "workloads/registry.hpp"
 
 namespace tools {
@@ -63,7 +65,7 @@ std::string toml_quoted(const std::string& text) {
   std::string quoted = "\"";
   for (char c : text) {
     if (c == '"' || c == '\\') quoted += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
       quoted += ' ';  // control characters cannot appear in a basic string
       continue;
     }
@@ -77,15 +79,23 @@ std::string toml_quoted(const std::string& text) {
 // TOML ("P1", "../x.toml") is taken as a bare string.
 toml::table parse_override(const std::string& key, const std::string& value,
                            const std::string& flag) {
+  const auto parse = [&](const std::string& document) {
+    network::check_toml_limits(document, flag, false);
+    return toml::parse(std::string_view(document), std::string_view(flag));
+  };
   const bool one_line = value.find_first_of("\r\n") == std::string::npos;
   if (one_line) {
     try {
-      return toml::parse(std::string_view(key + " = " + value), std::string_view(flag));
+      return parse(key + " = " + value);
     } catch (const toml::parse_error&) {
       // fall through: a bare string
     }
   }
-  return toml::parse(std::string_view(key + " = " + toml_quoted(value)), std::string_view(flag));
+  try {
+    return parse(key + " = " + toml_quoted(value));
+  } catch (const toml::parse_error& e) {  // not expected: the value is quoted, the key checked
+    throw ConfigError({flag, 0, 0}, std::string(e.description()));
+  }
 }
 
 // Applies one override and returns its key.
@@ -152,7 +162,7 @@ class SceneReader {
   t800::LinkConfig link_config(const toml::table* net, const network::Topology& topology) const;
   void apply_processor_keys(const toml::table& net, t800::ProcessorConfig& config) const;
   void apply_processor_keys(const toml::table& net, network::Topology& topology) const;
-  network::Topology topology(const toml::table* net) const;
+  network::Topology topology(const toml::table* net, SourcePos& origin) const;
   network::Topology generated(const toml::table& net, const toml::node& family) const;
   network::Topology from_file(const toml::node& path) const;
   void workload(Scene& scene) const;
@@ -162,6 +172,8 @@ class SceneReader {
   void fidelity(Scene& scene) const;
   void compiler(Scene& scene) const;
   bool boolean(const toml::table& t, const std::string& key, bool fallback) const;
+  std::string scene_relative(const std::string& name) const;
+  workloads::ParamValue fallback(const workloads::ParamSpec& spec) const;
   workloads::ParamValue param(const workloads::ParamSpec& spec, const toml::node& value,
                               const network::Topology& topology) const;
 
@@ -223,7 +235,8 @@ t800::LinkConfig SceneReader::link_config(const toml::table* network,
   return link;
 }
 
-network::Topology SceneReader::topology(const toml::table* net) const {
+// `origin` receives where the network was given (Scene::origins).
+network::Topology SceneReader::topology(const toml::table* net, SourcePos& origin) const {
   static const toml::table empty;
   const toml::table& n = net ? *net : empty;
   // Exactly one source of processors; naming the ones found makes a clash easy to fix.
@@ -242,6 +255,7 @@ network::Topology SceneReader::topology(const toml::table* net) const {
          "give only one of network.topology, network.family and [topology]; "
          "this scene has both " +
              given[0].first + " and " + given[1].first);
+  origin = pos(*given[0].second);
   const bool family = given[0].first == "network.family";
   if (const toml::node* node = n.get("workers"); node && !family)
     fail(*node,
@@ -362,7 +376,7 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
     case ParamType::real: {
       if (!value.is_number()) wrong_type(value);  // an integer is a fine real
       const double x = number(value);
-      if (std::isnan(x)) fail(value, key + " is nan: give a number");
+      if (!std::isfinite(x)) fail(value, key + " is " + number_text(x) + ": give a finite number");
       check_range(x);
       return x;
     }
@@ -385,6 +399,18 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
                         "' in the topology; processors are " + processor_names(topology));
       return s;
     }
+    case ParamType::input_file:
+    case ParamType::output_file:
+    case ParamType::robot_file:
+      if (!value.is_string()) wrong_type(value);
+      return scene_relative(*value.value<std::string>());
+    case ParamType::precision: {
+      if (!value.is_string()) wrong_type(value);
+      const std::string s = *value.value<std::string>();
+      if (!t800::parse_precision(s))
+        fail(value, key + " = \"" + s + "\" is not valid; choose one of real32, real64");
+      return s;
+    }
     case ParamType::real_list: {
       if (!value.is_array()) wrong_type(value);
       std::vector<double> list;
@@ -393,13 +419,28 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
           fail(element, "'" + key + "': expected an array of numbers, got an element of type " +
                             type_name(element));
         list.push_back(number(element));
-        if (std::isnan(list.back())) fail(element, key + " contains nan: give numbers");
+        if (!std::isfinite(list.back()))
+          fail(element, key + " contains " + number_text(list.back()) + ": give finite numbers");
         check_range(list.back());
       }
       return list;
     }
   }
   return {};
+}
+
+// A file a workload names is relative to the scene that names it, like the scene's topology file.
+// (Whether it is there is the run's inputs' question: tools/run_inputs.cpp.)
+std::string SceneReader::scene_relative(const std::string& name) const {
+  if (name.empty()) return name;  // none
+  fs::path resolved(name);
+  if (resolved.is_relative()) resolved = fs::path(file_).parent_path() / resolved;
+  return resolved.string();
+}
+
+workloads::ParamValue SceneReader::fallback(const workloads::ParamSpec& spec) const {
+  if (!is_file(spec.type)) return spec.default_value;
+  return scene_relative(std::get<std::string>(spec.default_value));
 }
 
 void SceneReader::workload(Scene& scene) const {
@@ -418,9 +459,11 @@ void SceneReader::workload(Scene& scene) const {
   std::vector<std::string> valid{"kind"};
   for (const workloads::ParamSpec& p : info->params) valid.push_back(p.name);
   check_keys(t, valid, "[workload] of kind " + info->kind);
+  scene.origins["workload"] = pos(t);
   for (const workloads::ParamSpec& spec : info->params) {
     const toml::node* value = t.get(spec.name);
-    scene.workload.set(spec.name, value ? param(spec, *value, scene.topology) : spec.default_value);
+    if (value) scene.origins["workload." + spec.name] = pos(*value);
+    scene.workload.set(spec.name, value ? param(spec, *value, scene.topology) : fallback(spec));
     if (!value) scene.workload_defaults.push_back(spec.name);
   }
 }
@@ -571,7 +614,7 @@ Scene SceneReader::read() {
                {"topology", "family", "workers", "link_speed_mbps", "link_protocol", "processor",
                 "memory", "wait_states"},
                "[network]");
-  scene.topology = topology(net);
+  scene.topology = topology(net, scene.origins["network"]);
   scene.link = link_config(net, scene.topology);
   workload(scene);
   placement(scene);
@@ -582,6 +625,15 @@ Scene SceneReader::read() {
 }
 
 }  // namespace
+
+SourcePos origin_of(const Scene& scene, const std::vector<std::string>& keys) {
+  for (const std::string& key : keys)
+    if (auto it = scene.origins.find(key); it != scene.origins.end()) return it->second;
+  for (const std::string& key : keys)
+    if (key.rfind("workload.", 0) == 0 && scene.origins.count("workload"))
+      return scene.origins.at("workload");
+  return {scene.file, 0, 0};
+}
 
 // An override that names the network's source (network.topology, network.family or [topology])
 // replaces the scene file's source, so a family scene can be run on a topology file and the other

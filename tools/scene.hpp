@@ -32,7 +32,15 @@ struct Scene {
   network::Fidelity fidelity;
   // [compiler] run_time_checks: occam's run-time checks compiled in (the compiler's default).
   bool run_time_checks = true;
+  // Where settings were written, for errors found after reading (workloads::SettingError): each
+  // workload parameter given ("workload.NAME"), the [workload] table ("workload") and what gave
+  // the network ("network"); a file position, or the --set flag that gave it.
+  std::map<std::string, network::SourcePos> origins;
 };
+
+// Where `keys` (most specific first) were written: the first one given, else the [workload] table
+// for a workload key, else the scene file.
+network::SourcePos origin_of(const Scene& scene, const std::vector<std::string>& keys);
 
 // Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the
 // value is read as a TOML value (4000, 2.5, "text", true, [1,2]) and, if that fails, as a bare

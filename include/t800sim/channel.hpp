@@ -21,6 +21,9 @@ namespace detail {
 struct ChannelSlot {
   std::string name, protocol;
   std::string writer, reader;  // process names; empty while only one end is declared
+  // Channel i of an array of `array` channels: an end named after a group of `array` processes is
+  // joined to its member i (resolved when the program is placed: groups may be declared later).
+  int index = -1, array = 0;
   network::Channel* impl = nullptr;
 };
 }  // namespace detail
@@ -62,6 +65,7 @@ class Chan {
   Out<P> out() const { return Out<P>(slot_); }
   In<P> in() const { return In<P>(slot_); }
   const std::string& name() const { return slot_->name; }
+  detail::ChannelSlot* slot() const { return slot_; }
 
  private:
   detail::ChannelSlot* slot_ = nullptr;

@@ -90,9 +90,11 @@ class Builder {
   Chans<P> channels(const std::string& name, int n, const std::string& from,
                     const std::string& to) {
     Chans<P> cs;
-    for (int i = 0; i < n; ++i)
-      cs.emplace_back(declare(name + "[" + std::to_string(i) + "]", protocol<P>::name(),
-                              member(from, i, n), member(to, i, n)));
+    for (int i = 0; i < n; ++i) {
+      cs.emplace_back(declare(name + "[" + std::to_string(i) + "]", protocol<P>::name(), from, to));
+      cs.back().slot()->index = i;
+      cs.back().slot()->array = n;
+    }
     return cs;
   }
   // One end of a channel, declared by the process that uses it; the two ends of a name are joined
@@ -126,7 +128,6 @@ class Builder {
                                const std::string& from, const std::string& to);
   detail::ChannelSlot* end(const std::string& name, const std::string& protocol,
                            const std::string& process, bool writer);
-  std::string member(const std::string& process, int i, int n) const;
 
   Network network_;
   std::deque<ProcessDecl> processes_;         // stable addresses: declarations are returned

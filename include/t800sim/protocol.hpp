@@ -59,6 +59,8 @@ struct protocol;
 template <class... Items>
 struct Case {
   std::tuple<typename protocol<Items>::value_type...> items;
+  friend bool operator==(const Case& a, const Case& b) { return a.items == b.items; }
+  friend bool operator!=(const Case& a, const Case& b) { return !(a == b); }
 };
 template <class... Cases>
 struct Variant {};  // CASE ...
@@ -216,12 +218,7 @@ struct protocol<Variant<Cases...>> {
     return 1 + std::visit(
                    [](const auto& c) { return protocol<std::decay_t<decltype(c)>>::bytes(c); }, v);
   }
-  static std::string name() {
-    std::string s = "CASE";
-    std::size_t tag = 0;
-    ((s += (tag ? " | " : " ") + std::to_string(tag) + ": " + protocol<Cases>::name(), ++tag), ...);
-    return s;
-  }
+  static std::string name() { return case_names(std::index_sequence_for<Cases...>{}); }
   static void send(detail::Wire& w, const value_type& v) {
     protocol<BYTE>::send(w, BYTE(v.index()));
     std::visit([&w](const auto& c) { protocol<std::decay_t<decltype(c)>>::send(w, c); }, v);
@@ -232,6 +229,12 @@ struct protocol<Variant<Cases...>> {
   }
 
  private:
+  template <std::size_t... I>
+  static std::string case_names(std::index_sequence<I...>) {
+    std::string s = "CASE";
+    ((s += (I ? " | " : " ") + std::to_string(I) + ": " + protocol<Cases>::name()), ...);
+    return s;
+  }
   template <std::size_t... I>
   static value_type receive_case(detail::Wire& w, std::size_t tag, std::index_sequence<I...>) {
     using Receive = value_type (*)(detail::Wire&);

@@ -23,11 +23,17 @@
 #include "t800sim/program.hpp"
 #include "t800sim/version.hpp"
 #include "workloads/params.hpp"
+#include "workloads/setting_error.hpp"
 
 namespace t800sim {
 
 using Params = workloads::Params;
 using Param = workloads::ParamSpec;
+// A setting the network or the other settings rule out: throw it from a program's factory with
+// the scene keys it is about (most specific first; kNetworkKey for the topology), and the error
+// names the file and line, or the flag, that set them.
+using workloads::kNetworkKey;
+using workloads::SettingError;
 
 struct WorkloadSpec {
   std::string kind;
@@ -49,6 +55,14 @@ Param text_param(std::string name, std::string fallback, std::string help,
 Param real_list_param(std::string name, std::vector<double> fallback, std::string help);
 // A processor of the network, by name; empty (the default) lets the program choose.
 Param processor_param(std::string name, std::string help);
+// The program's arithmetic, "real32" or "real64": the simulated processors compute at it and every
+// report states it (and whether it was chosen or the default).
+Param precision_param(std::string name, std::string fallback, std::string help);
+// Files, relative to the scene that names them; the program gets the resolved path, or "" for none.
+// An input file must exist when the scene is read; an output file must be writable before the
+// simulation starts.
+Param input_file_param(std::string name, std::string help);
+Param output_file_param(std::string name, std::string help);
 
 }  // namespace t800sim
 

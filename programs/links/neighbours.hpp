@@ -16,14 +16,17 @@ inline std::pair<std::string, std::string> neighbour_pair(const t800sim::Params&
   const int from = from_name.empty() ? network.host_processor() : network.find(from_name);
   const auto neighbours = network.neighbours(from);
   if (neighbours.empty())
-    throw std::invalid_argument("processor " + network.processor_name(from) +
-                                " has no neighbour: a link workload needs two linked processors");
+    throw t800sim::SettingError(
+        {"workload.from", t800sim::kNetworkKey},
+        "processor " + network.processor_name(from) +
+            " has no neighbour: a link workload needs two linked processors");
   const std::string& to_name = params.text("to");
   const int to = to_name.empty() ? neighbours.front() : network.find(to_name);
   if (std::find(neighbours.begin(), neighbours.end(), to) == neighbours.end())
-    throw std::invalid_argument(
+    throw t800sim::SettingError(
+        {"workload.to", "workload.from", t800sim::kNetworkKey},
         "workload.from and workload.to must be neighbours: " + network.processor_name(from) +
-        " and " + network.processor_name(to) + " are not linked");
+            " and " + network.processor_name(to) + " are not linked");
   return {network.processor_name(from), network.processor_name(to)};
 }
 

@@ -1,7 +1,10 @@
 #include "workloads/farm/dynamics_farm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "workloads/setting_error.hpp"
 
 #include "workloads/farm/farm_program.hpp"
 #include "workloads/registry.hpp"
@@ -15,12 +18,13 @@ using dynamics::JointVector;
 JointVector joint_vector(const Params& p, const std::string& name) {
   const std::vector<double>& v = p.real_list(name);
   if (v.size() != dynamics::kJoints)
-    throw std::invalid_argument("workload." + name + " needs " + std::to_string(dynamics::kJoints) +
-                                " values, got " + std::to_string(v.size()));
+    throw SettingError({"workload." + name}, "workload." + name + " needs " +
+                                                 std::to_string(dynamics::kJoints) +
+                                                 " values, got " + std::to_string(v.size()));
   JointVector out;
   for (int i = 0; i < dynamics::kJoints; ++i) {
     if (!std::isfinite(v[i]))
-      throw std::invalid_argument("workload." + name + " has a non-finite value");
+      throw SettingError({"workload." + name}, "workload." + name + " has a non-finite value");
     out(i) = v[i];
   }
   return out;
@@ -36,7 +40,7 @@ std::vector<int> workers_of(const network::Topology& t) {
 
 int master_of(const network::Topology& t) {
   if (t.host_processor() < 0)
-    throw std::invalid_argument("the farm's master must be wired to the host");
+    throw SettingError({kNetworkKey}, "the farm's master must be wired to the host");
   return t.host_processor();
 }
 
@@ -53,8 +57,8 @@ class DynamicsFarm : public Workload {
         q_(joint_vector(c.params, "q")),
         qd_(joint_vector(c.params, "qd")) {
     if (!dynamics::within_limits(require_robot(c), q_))
-      throw std::invalid_argument("workload.q is outside the joint limits of " +
-                                  require_robot(c).name);
+      throw SettingError({"workload.q"},
+                         "workload.q is outside the joint limits of " + require_robot(c).name);
   }
 
   void build(network::Machine& m) override {
@@ -124,8 +128,9 @@ class DynamicsFarm : public Workload {
       row.set("compute_us", a.compute_us());
       row.set("busy_in_tp_us", busy);
       row.set("utilisation_pct", 100.0 * busy / tp_us);
-      row.set("end_us",
-              a.last_busy_us() - origin);  // when it last stopped working, from the start of Tp
+      // When it last stopped working, from the start of Tp; a worker that did nothing in Tp (no subtask,
+      // nothing to route) was done when Tp began.
+      row.set("end_us", std::max(0.0, a.last_busy_us() - origin));
       ResultValue names = ResultValue::list();
       for (int t : program_.done_by()[w]) names.push(program_.work().tasks[t].subtask.name);
       row.set("subtasks", names);
@@ -173,7 +178,7 @@ const Registration registered_dynamics_farm{
     WorkloadInfo{"dynamics-farm",
      "one forward-dynamics evaluation (D, C, h of the robot) farmed from a master to workers",
      {
-         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+         {"robot", T::robot_file, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
           {}, {}, {}},
          {"model", T::text, std::string{"paper"},
           "\"paper\" (64 subtasks, joint-6 Coriolis terms dropped) or \"full\" (every non-zero term)", {}, {},
@@ -184,8 +189,7 @@ const Registration registered_dynamics_farm{
           {}, {}, {"static", "on-demand", "explicit"}},
          {"allocation", T::text, std::string{}, "explicit allocation: \"P1: D11 D12 h2; P2: C1_23 ...\"", {},
           {}, {}},
-         {"precision", T::text, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {},
-          {"real32", "real64"}},
+         {"precision", T::precision, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {}, {}},
          {"tp_window", T::text, std::string{"farm"},
           "what Tp covers: \"farm\" (first input sent to last result received) or \"evaluation\" (state "
           "received to D, C, c, h assembled, with the master's sin/cos and assembly)",

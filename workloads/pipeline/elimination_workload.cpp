@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include "workloads/dynamics/subtask_set.hpp"
 #include "workloads/pipeline/pipeline.hpp"
 #include "workloads/registry.hpp"
@@ -16,10 +18,10 @@ elimination::LinearSystem<double> given_system(const Params& p) {
   const std::vector<double>& b = p.real_list("b");
   const std::size_t n = b.size();
   if (n == 0 || a.size() != n * n)
-    throw std::invalid_argument(
-        "elimination: workload.a must hold n*n values (row by row) for the n "
-        "values of workload.b; got " +
-        std::to_string(a.size()) + " and " + std::to_string(n));
+    throw SettingError({"workload.a"},
+                       "elimination: workload.a must hold n*n values (row by row) for the n "
+                       "values of workload.b; got " +
+                           std::to_string(a.size()) + " and " + std::to_string(n));
   elimination::LinearSystem<double> s;
   for (std::size_t i = 0; i < n; ++i) {
     s.a.emplace_back(a.begin() + std::ptrdiff_t(i * n), a.begin() + std::ptrdiff_t((i + 1) * n));
@@ -31,9 +33,9 @@ elimination::LinearSystem<double> given_system(const Params& p) {
 dynamics::JointVector joint_vector(const Params& p, const std::string& name) {
   const std::vector<double>& v = p.real_list(name);
   if (v.size() != dynamics::kJoints)
-    throw std::invalid_argument("elimination: workload." + name + " needs " +
-                                std::to_string(dynamics::kJoints) + " values, got " +
-                                std::to_string(v.size()));
+    throw SettingError({"workload." + name}, "elimination: workload." + name + " needs " +
+                                                 std::to_string(dynamics::kJoints) +
+                                                 " values, got " + std::to_string(v.size()));
   dynamics::JointVector j;
   for (int i = 0; i < dynamics::kJoints; ++i) j(i) = v[std::size_t(i)];
   return j;
@@ -110,8 +112,7 @@ const Registration registered_elimination{
          {"m", T::integer, std::int64_t{0},
           "level-2 processors E1..Em used; 0 = all of the topology's (elimination-m<m>.toml has m)", 0, 64,
           {}},
-         {"precision", T::text, std::string{"real64"}, "occam REAL32 or REAL64 arithmetic", {}, {},
-          {"real32", "real64"}},
+         {"precision", T::precision, std::string{"real64"}, "occam REAL32 or REAL64 arithmetic", {}, {}, {}},
          {"pivoting", T::text, std::string{"simple"},
           "\"simple\" (the paper: interchange only when the pivot is unusable) or \"partial\" (largest in "
           "the column)",
@@ -139,7 +140,7 @@ const Registration registered_elimination{
           "the system: \"arm\" (D q'' = tau - c - h of the robot at q, qd, tau), \"random\" (n x n from "
           "seed) or \"given\" (workload.a, workload.b)",
           {}, {}, {"arm", "random", "given"}},
-         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+         {"robot", T::robot_file, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
           {}, {}, {}},
          {"model", T::text, std::string{"full"},
           "dynamics model for source = \"arm\": \"full\" or \"paper\" (64 subtasks)", {}, {},

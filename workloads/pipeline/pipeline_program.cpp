@@ -8,6 +8,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include <systemc>
 
 #include "workloads/pipeline/costs.hpp"
@@ -39,9 +41,9 @@ std::int64_t real_bytes(t800::Precision precision) {
 int require_node(const network::Topology& t, const std::string& name, const std::string& role) {
   const int index = t.find(name);
   if (index < 0)
-    throw std::invalid_argument("elimination: the topology " + t.name + " has no processor " +
-                                name + " (" + role +
-                                "); use configs/topologies/elimination-m<m>.toml");
+    throw SettingError({kNetworkKey}, "elimination: the topology " + t.name + " has no processor " +
+                                          name + " (" + role +
+                                          "); use configs/topologies/elimination-m<m>.toml");
   return index;
 }
 

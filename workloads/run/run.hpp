@@ -82,6 +82,11 @@ struct RunReport {
   std::vector<ProcessorReport> processors;
   std::vector<LinkReport> links;
   std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
+  std::vector<std::string> wait_cycle;           // the deadlock's cycle of waits, when there is one
+  network::Limit limit = network::Limit::none;   // a limit stopped the run: no workload results
+  // Non-empty: the run ended but its results are not results: the workload reported a failure (a solve
+  // without a usable pivot) or a number came out NaN or infinite (REAL32 overflow). Says which.
+  std::string failure;
   ResultValue workload;
   std::vector<TraceTrack>
       tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)
