@@ -44,7 +44,8 @@ class FarmTree {
                                     network.processor_name(root_));
     // Worker w runs on order[w + 1]; its parent is the master (-1) or another worker.
     std::vector<int> worker_of(std::size_t(n), -1);
-    for (std::size_t w = 0; w + 1 < order.size(); ++w) worker_of[std::size_t(order[w + 1])] = int(w);
+    for (std::size_t w = 0; w + 1 < order.size(); ++w)
+      worker_of[std::size_t(order[w + 1])] = int(w);
     workers_.resize(order.size() - 1);
     for (std::size_t w = 0; w < workers_.size(); ++w) {
       const int processor = order[w + 1];

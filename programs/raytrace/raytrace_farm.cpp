@@ -59,7 +59,7 @@ std::string member(const char* group, int i) {
 
 // FNV-1a over the colours' bits: one number that differs if any pixel does.
 std::string checksum(const std::vector<float>& values) {
-  std::uint64_t h = 1469598103934665603ull;
+  std::uint64_t h = 14695981039346656037ull;
   for (float v : values) {
     std::uint32_t bits = 0;
     std::memcpy(&bits, &v, sizeof bits);
@@ -79,6 +79,7 @@ class RaytraceFarm : public Program {
       : width_(int(p.integer("width"))),
         height_(int(p.integer("height"))),
         reflections_(int(p.integer("reflections"))),
+        real64_(p.text("precision") == "real64"),
         tree_(n),
         image_(std::size_t(kColours * width_ * height_), 0.0f),
         line_cycles_(std::size_t(height_), 0),
@@ -92,8 +93,9 @@ class RaytraceFarm : public Program {
     b.processes("router", n, [this](Process& p, int w) { router(p, w); })
         .placed_on(tree_.worker_processors())
         .high();
-    b.processes("worker", n, [this](Process& p, int w) { worker(p, w); })
-        .placed_on(tree_.worker_processors());
+    b.processes("worker", n, [this](Process& p, int w) {
+       worker(p, w);
+     }).placed_on(tree_.worker_processors());
     for (int w = 0; w < n; ++w) {
       const int up = tree_.worker(w).parent;
       const std::string parent = up < 0 ? "master" : member("router", up);
@@ -106,8 +108,8 @@ class RaytraceFarm : public Program {
     credit_ = b.channels<INT>("credit", n, "router", "router");
     // The PROC every worker runs, for its memory: one line's code (the longest path through a
     // pixel sets its size) and its arrays.
-    const Kernel line = record_kernel<Real32>(
-        kKernelName, [&] { trace_line<Real32>(height_ / 2, width_, height_, reflections_); });
+    std::vector<float> unused;
+    const Kernel line = trace(height_ / 2, unused);
     for (int w = 0; w < n; ++w) b.code(member("worker", w), line);
   }
 
@@ -115,6 +117,7 @@ class RaytraceFarm : public Program {
     r.set("width", std::int64_t(width_));
     r.set("height", std::int64_t(height_));
     r.set("reflections", std::int64_t(reflections_));
+    r.set("precision", real64_ ? "real64" : "real32");
     r.set("workers", std::int64_t(tree_.workers()));
     r.set("tp_us", end_us_ - start_us_);
     r.set("tp_ms", (end_us_ - start_us_) / 1000.0);
@@ -141,7 +144,7 @@ class RaytraceFarm : public Program {
       v.set("name", member("worker", w));
       v.set("processor", tree_.worker(w).processor);
       v.set("parent", tree_.worker(w).parent < 0 ? tree_.master_processor()
-                                                  : tree_.worker(tree_.worker(w).parent).processor);
+                                                 : tree_.worker(tree_.worker(w).parent).processor);
       v.set("lines", std::int64_t(lines_of_[std::size_t(w)]));
       per_worker.push(v);
     }
@@ -274,14 +277,23 @@ class RaytraceFarm : public Program {
     }
   }
 
+  // One line traced in the program's precision (the colours travel as REAL32 either way), recorded
+  // as the kernel the worker computes.
+  Kernel trace(int line, std::vector<float>& rgb) const {
+    if (real64_)
+      return record_kernel<Real64>(
+          kKernelName, [&] { rgb = trace_line<Real64>(line, width_, height_, reflections_); });
+    return record_kernel<Real32>(
+        kKernelName, [&] { rgb = trace_line<Real32>(line, width_, height_, reflections_); });
+  }
+
   void worker(Process& p, int w) {
     for (;;) {
       const value_of<Work> v = p.in(feed_[std::size_t(w)]);
       if (is_stop(v)) break;
       const int line = std::get<0>(std::get<0>(v).items);
       std::vector<float> rgb;
-      const Kernel k = record_kernel<Real32>(
-          kKernelName, [&] { rgb = trace_line<Real32>(line, width_, height_, reflections_); });
+      const Kernel k = trace(line, rgb);
       line_cycles_[std::size_t(line)] = p.cycles(k);
       line_worker_[std::size_t(line)] = w;
       p.compute(k);
@@ -292,6 +304,7 @@ class RaytraceFarm : public Program {
   }
 
   int width_, height_, reflections_;
+  bool real64_;
   FarmTree tree_;
   std::vector<Chan<Work>> work_, feed_, ahead_;
   std::vector<Chan<Result>> result_, done_;
@@ -306,14 +319,16 @@ class RaytraceFarm : public Program {
 }  // namespace
 
 T800SIM_WORKLOAD(raytrace_farm) {
-  return {"raytrace-farm",
-          "a ray tracer farmed line by line from a master to a worker on every other transputer "
-          "(INMOS TN07): an ALT-ing on-demand master, workers buffering a line ahead, routers "
-          "forwarding work and results on every transputer",
-          {integer_param("width", 64, "pixels per line (a line is one work item)", 4, 4096),
-           integer_param("height", 64, "lines of the image", 1, 4096),
-           integer_param("reflections", 2, "mirror bounces traced at most", 0, 8)},
-          [](const Params& p, const Network& n) { return std::make_unique<RaytraceFarm>(p, n); }};
+  return {
+      "raytrace-farm",
+      "a ray tracer farmed line by line from a master to a worker on every other transputer "
+      "(INMOS TN07): an ALT-ing on-demand master, workers buffering a line ahead, routers "
+      "forwarding work and results on every transputer",
+      {integer_param("width", 64, "pixels per line (a line is one work item)", 4, 4096),
+       integer_param("height", 64, "lines of the image", 1, 4096),
+       integer_param("reflections", 2, "mirror bounces traced at most", 0, 8),
+       precision_param("precision", "real32", "occam REAL32 or REAL64 arithmetic of the tracing")},
+      [](const Params& p, const Network& n) { return std::make_unique<RaytraceFarm>(p, n); }};
 }
 
 }  // namespace raytrace
