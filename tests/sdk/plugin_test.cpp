@@ -102,4 +102,14 @@ TEST(SdkPlugin, APluginOfAnotherSdkVersionIsRefused) {
   expect_refused(scene, "plugins/tiny_other_version.so", "built against t800sim SDK 0.0-other");
 }
 
+TEST(SdkPlugin, AnEmptyPluginPathIsAnErrorAtItsLine) {
+  const PluginScene scene("", "");
+  expect_refused(scene, "workload.plugin", "is empty");
+}
+
+TEST(SdkPlugin, APluginRegisteringAKindThatExistsIsRefused) {
+  const PluginScene scene("tiny_clash", "plugins/tiny_clash.so");
+  expect_refused(scene, "plugins/tiny_clash.so", "workload kind pingpong is registered twice");
+}
+
 }  // namespace

@@ -1,7 +1,8 @@
 // The smallest plugin, built in the test tree as a user builds one (t800sim::plugin: headers only),
-// for the plugin tests (tests/sdk/plugin_test.cpp). Built three ways: as is; claiming another SDK
-// version (T800SIM_TEST_OTHER_VERSION, as a plugin built against another release would); and
-// without T800SIM_PLUGIN() (T800SIM_TEST_NOT_A_PLUGIN: a shared library that is not a plugin).
+// for the plugin tests (tests/sdk/plugin_test.cpp). Built four ways: as is; claiming another SDK
+// version (T800SIM_TEST_OTHER_VERSION, as a plugin built against another release would); without
+// T800SIM_PLUGIN() (T800SIM_TEST_NOT_A_PLUGIN: a shared library that is not a plugin); and
+// registering its kind under a built-in kind's name (T800SIM_TEST_KIND="pingpong").
 #include "t800sim/workload.hpp"
 
 namespace {
@@ -27,9 +28,13 @@ class Busy : public Program {
 
 }  // namespace
 
+#ifndef T800SIM_TEST_KIND
+#define T800SIM_TEST_KIND "tiny_busy"
+#endif
+
 T800SIM_WORKLOAD(tiny_busy) {
   return {
-      "tiny_busy",
+      T800SIM_TEST_KIND,
       "a plugin's process that computes for a while",
       {integer_param("cycles", 1000, "cycles to compute", 1, 1e9)},
       [](const Params& p, const Network&) { return std::make_unique<Busy>(p.integer("cycles")); }};
