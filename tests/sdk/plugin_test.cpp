@@ -45,7 +45,7 @@ struct PluginScene {
 
 TEST(SdkPlugin, RunLoadsThePluginRelativeToTheSceneAndRunsItsKind) {
   const PluginScene scene("tiny", "plugins/tiny.so");
-  const auto o = cli_test::run("run " + scene.file.string() + " --json 2>&1");
+  const auto o = cli_test::run("run " + scene.file.string() + " --json");  // stdout only: the JSON
   ASSERT_EQ(o.exit_code, 0) << o.out;
   const auto report = nlohmann::json::parse(o.out);
   EXPECT_EQ(report["workload"]["kind"], "tiny_busy");
