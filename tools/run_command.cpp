@@ -12,8 +12,8 @@
 #include "network/config_error.hpp"
 #include "tools/commands.hpp"
 #include "tools/report_format.hpp"
-#include "tools/run_inputs.hpp"
 #include "tools/run_progress.hpp"
+#include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 #include "tools/trace_files.hpp"
 #include "workloads/params.hpp"
@@ -90,10 +90,9 @@ int run_scene(const RunArgs& args) {
   write_traces(report, args.traces);  // also after a deadlock: the trace shows who waited for whom
   if (!report.blocked.empty()) return kExitFailure;
   if (report.limit != network::Limit::none) {
-    std::cerr << fmt::format(
-        "error: stopped by {} at simulated time {:.3f} us, before the run ended: "
-        "no workload results\n",
-        limit_text(args, report), report.simulated_us);
+    std::cerr << fmt::format("error: stopped by {} at simulated time {:.3f} us, before the run ended: "
+                             "no workload results\n",
+                             limit_text(args, report), report.simulated_us);
     return kExitLimit;
   }
   if (!report.failure.empty()) {
@@ -116,9 +115,8 @@ void add_run_command(CLI::App& app) {
       ->type_name("KEY=VALUE");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the text report");
   add_trace_options(*cmd, args->traces);
-  cmd->add_option(
-         "--max-sim-time", args->max_sim_s,
-         "stop the run after this many seconds of simulated time (exit code 4; 0: no limit)")
+  cmd->add_option("--max-sim-time", args->max_sim_s,
+                  "stop the run after this many seconds of simulated time (exit code 4; 0: no limit)")
       ->type_name("SECONDS");
   cmd->add_option("--max-wall-time", args->max_wall_s,
                   "stop the run after this many seconds of host time (exit code 4; 0: no limit)")
