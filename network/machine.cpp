@@ -26,7 +26,7 @@ void run_body(Process* p, Process::Body body) {
 }  // namespace
 
 Machine::Machine(const Topology& topology, const MachineOptions& options)
-    : topology_(topology), options_(options) {
+    : topology_(topology), routes_(topology_), options_(options) {
   for (const ProcessorSpec& spec : topology_.processors) {
     transputers_.push_back(
         std::make_unique<t800::Transputer>(module_name(spec.name).c_str(), spec.config));
@@ -79,12 +79,24 @@ void Machine::elaborate_links() {
   }
 }
 
+// Connection i is link_modules_[i]; the host's link comes after the connections.
 std::optional<std::pair<t800::Link*, int>> Machine::link_between(int a, int b) const {
-  for (const LinkInfo& l : links_) {
-    if (l.node[0] == a && l.node[1] == b) return std::make_pair(l.link, 0);
-    if (l.node[1] == a && l.node[0] == b) return std::make_pair(l.link, 1);
+  if (a == kHost || b == kHost) {
+    if (!topology_.host || (a == kHost) == (b == kHost)) return std::nullopt;
+    const LinkInfo& host = links_.back();
+    if (host.node[0] == a && host.node[1] == b) return std::make_pair(host.link, 0);
+    if (host.node[1] == a && host.node[0] == b) return std::make_pair(host.link, 1);
+    return std::nullopt;
   }
-  return std::nullopt;
+  const LinkIndex& index = routes_.index();
+  int first = -1;
+  for (int link = 0; link < kLinksPerProcessor; ++link) {
+    const int c = index.connection_at(a, link);
+    if (c >= 0 && index.peer(a, link).processor == b && (first < 0 || c < first)) first = c;
+  }
+  if (first < 0) return std::nullopt;
+  const LinkInfo& l = links_[std::size_t(first)];
+  return std::make_pair(l.link, l.node[0] == a ? 0 : 1);
 }
 
 std::vector<int> Machine::route(int from, int to) const {
@@ -92,8 +104,8 @@ std::vector<int> Machine::route(int from, int to) const {
   if (from == to) return {from};
   if (from == kHost || to == kHost) {
     if (host_proc < 0) return {};
-    std::vector<int> inner = from == kHost ? topology_.shortest_path(host_proc, to)
-                                           : topology_.shortest_path(from, host_proc);
+    std::vector<int> inner =
+        from == kHost ? routes_.path(host_proc, to) : routes_.path(from, host_proc);
     if (inner.empty()) return {};
     if (from == kHost)
       inner.insert(inner.begin(), kHost);
@@ -101,7 +113,7 @@ std::vector<int> Machine::route(int from, int to) const {
       inner.push_back(kHost);
     return inner;
   }
-  return topology_.shortest_path(from, to);
+  return routes_.path(from, to);
 }
 
 Channel& Machine::channel(const std::string& name, int from, int to) {
@@ -178,7 +190,7 @@ void Machine::start_router(int node, int from, t800::Link& link, int end) {
 // largest frame of the PROCs each runs, plus the words below a process's workspace pointer the
 // scheduler uses), their arrays, the code of every PROC and library routine once.
 void Machine::place_memory() {
-  constexpr int kSchedulerWords = 5;  // Iptr, link, state, timer link and time below Wptr
+  constexpr int kSchedulerWords = 5;         // Iptr, link, state, timer link and time below Wptr
   constexpr int kUndeclaredFrameWords = 16;  // a process whose code was not declared (U)
   for (int node = 0; node < processors(); ++node) {
     t800::MemoryDemand demand;

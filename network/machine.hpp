@@ -15,6 +15,7 @@
 #include "network/channel.hpp"
 #include "network/fidelity.hpp"
 #include "network/process.hpp"
+#include "network/routes.hpp"
 #include "network/topology.hpp"
 #include "t800/compute_model.hpp"
 #include "t800/transputer.hpp"
@@ -25,7 +26,7 @@ struct MachineOptions {
   t800::LinkConfig link;  // default for connections without their own speed
   t800::Precision precision = t800::Precision::real64;
   double code_efficiency = 1.0;
-  bool checked = true;  // occam's run-time checks compiled into the generated code
+  bool checked = true;          // occam's run-time checks compiled into the generated code
   bool keep_intervals = false;  // for traces
   Fidelity fidelity;
 };
@@ -85,9 +86,12 @@ class Machine {
   const std::vector<std::unique_ptr<Channel>>& channels() const { return channels_; }
   double simulated_us() const { return end_us_; }
 
-  // The link from node a to its neighbour b, and a's end of it; nullopt when they are not
-  // neighbours.
+  // The link from node a to its neighbour b, and a's end of it (of several, the first connection
+  // listed); nullopt when they are not neighbours.
   std::optional<std::pair<t800::Link*, int>> link_between(int a, int b) const;
+  // The nodes a channel from -> to passes (both included; the host is kHost): a shortest path,
+  // lowest link first (network/routes.hpp). Empty when there is none.
+  std::vector<int> route(int from, int to) const;
   // The processes running on nodes, for reports.
   const std::vector<std::unique_ptr<Process>>& processes() const { return processes_; }
 
@@ -96,9 +100,9 @@ class Machine {
   void finalise_channels();
   void place_memory();
   void start_router(int node, int from, t800::Link& link, int end);
-  std::vector<int> route(int from, int to) const;
 
   Topology topology_;
+  Routes routes_;
   MachineOptions options_;
   std::vector<std::unique_ptr<t800::Transputer>> transputers_;
   std::vector<t800::ComputeModel> compute_models_;

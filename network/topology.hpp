@@ -1,5 +1,6 @@
 // A validated network of transputers: plain data (docs/architecture.md). Built from a topology file
-// (topology_file.hpp) or a family generator (families.hpp); elaborated into SystemC modules elsewhere.
+// (topology_file.hpp) or a family generator (families.hpp); elaborated into SystemC modules
+// elsewhere.
 #pragma once
 
 #include <optional>
@@ -45,17 +46,19 @@ struct Topology {
   int connection_at(int processor, int link) const;
   // The far end of the connection at (processor, link); requires connection_at(...) >= 0.
   LinkEnd peer(int processor, int link) const;
-  // Processor indices adjacent to p, in link order.
+  // Processor indices adjacent to p, in link order. (Each call indexes the whole topology: code
+  // that asks often keeps a network::LinkIndex.)
   std::vector<int> neighbours(int p) const;
-  // A shortest path from -> to as processor indices (both included); deterministic (lowest link first).
-  // Empty when unreachable.
+  // A shortest path from -> to as processor indices (both included); deterministic (lowest link
+  // first, network/routes.hpp). Empty when unreachable. (Code that asks often keeps a
+  // network::Routes.)
   std::vector<int> shortest_path(int from, int to) const;
   // The processor wired to the host, or -1.
   int host_processor() const { return host ? host->processor : -1; }
 };
 
-// Structural checks shared by files and generators: duplicate names, link index 0..3, a link end used
-// twice (including by the host), self-loops, speeds, processors unreachable from the host.
+// Structural checks shared by files and generators: duplicate names, link index 0..3, a link end
+// used twice (including by the host), self-loops, speeds, processors unreachable from the host.
 // Throws ConfigError at the offending item's `where`.
 void validate(const Topology& topology);
 
