@@ -29,6 +29,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bench/support/t800sim_path.hpp"
+
 #include "tools/child_run.hpp"
 #include "tools/paper_data.hpp"
 #include "workloads/pipeline/pipeline.hpp"
@@ -237,33 +239,6 @@ double error_pct(double value, double reference) {
   return 100.0 * (value - reference) / reference;
 }
 
-// The t800sim to run: --t800sim, or the one in the build directory this program was built in
-// (BUILD/bench/fidelity_bench -> BUILD/t800sim).
-std::string find_t800sim(const std::string& given) {
-  auto runnable = [](const fs::path& p) {
-    std::error_code ec;
-    return fs::is_regular_file(p, ec) && access(p.c_str(), X_OK) == 0;
-  };
-  if (!given.empty()) {
-    if (!runnable(given))
-      throw std::invalid_argument("--t800sim " + given + ": no such executable file");
-    return fs::absolute(given).string();
-  }
-  std::array<char, PATH_MAX> buffer{};
-  const ssize_t n = readlink("/proc/self/exe", buffer.data(), buffer.size() - 1);
-  if (n <= 0)
-    throw std::invalid_argument("cannot locate this program (/proc/self/exe); give --t800sim PATH");
-  const fs::path self_dir = fs::path(std::string(buffer.data(), std::size_t(n))).parent_path();
-  const std::vector<fs::path> candidates{self_dir.parent_path() / "t800sim", self_dir / "t800sim"};
-  for (const fs::path& p : candidates)
-    if (runnable(p)) return p.string();
-  throw std::invalid_argument(
-      fmt::format("cannot find t800sim: looked for {} and {} (the build directory this benchmark "
-                  "was built in); "
-                  "build it with `cmake --build {} --target t800sim`, or give --t800sim PATH",
-                  candidates[0].string(), candidates[1].string(), self_dir.parent_path().string()));
-}
-
 // The progress line (on a terminal only) is rewritten in place; this blanks it.
 void clear_progress() {
   if (isatty(STDERR_FILENO)) std::cerr << "\r" << std::string(90, ' ') << "\r" << std::flush;
@@ -329,7 +304,7 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
 }
 
 int bench(const Options& o) {
-  const std::string exe = find_t800sim(o.t800sim);
+  const std::string exe = benchmarks::find_t800sim(o.t800sim);
   const std::vector<BenchScene> scenes = paper_scenes(o);
   std::size_t total = 0;
   for (const BenchScene& s : scenes) total += levels_for(s).size();
@@ -408,12 +383,6 @@ int bench(const Options& o) {
 }
 
 }  // namespace
-
-// workloads::table6_overrides comes with the elimination workload, which links libsystemc, and
-// libsystemc.so needs an sc_main; this program has its own main and never starts SystemC.
-int sc_main(int, char**) {
-  return 0;
-}
 
 int main(int argc, char** argv) {
   Options o;

@@ -13,8 +13,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
-#include <climits>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -28,6 +26,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bench/support/t800sim_path.hpp"
 #include "network/machine.hpp"
 #include "t800/compute_model.hpp"
 #include "t800/link_timing.hpp"
@@ -51,28 +50,17 @@ struct Options {
   std::string keep_plans;  // a directory to keep the SimGrid plans in, for inspection
 };
 
-// A program next to this benchmark's build directory (BUILD/bench/NAME -> BUILD/t800sim,
-// BUILD/bench/simgrid_model), or the one given; empty when `optional` and not found.
-std::string find_program(const std::string& given, const std::string& name, bool optional) {
-  auto runnable = [](const fs::path& p) {
-    std::error_code ec;
-    return fs::is_regular_file(p, ec) && access(p.c_str(), X_OK) == 0;
-  };
+// The SimGrid model built next to t800sim (BUILD/t800sim -> BUILD/bench/simgrid_model), or the one
+// given; empty when it was not built.
+std::string find_simgrid_model(const std::string& given, const std::string& t800sim) {
   if (!given.empty()) {
-    if (!runnable(given)) throw std::invalid_argument(given + ": no such executable file");
+    if (access(given.c_str(), X_OK) != 0 || !fs::is_regular_file(given))
+      throw std::invalid_argument("--simgrid-model " + given + ": no such executable file");
     return fs::absolute(given).string();
   }
-  std::array<char, PATH_MAX> buffer{};
-  const ssize_t n = readlink("/proc/self/exe", buffer.data(), buffer.size() - 1);
-  if (n <= 0) throw std::invalid_argument("cannot locate this program (/proc/self/exe)");
-  const fs::path bench_dir = fs::path(std::string(buffer.data(), std::size_t(n))).parent_path();
-  for (const fs::path& p : {bench_dir / name, bench_dir.parent_path() / name})
-    if (runnable(p)) return p.string();
-  if (optional) return {};
-  throw std::invalid_argument(
-      fmt::format("cannot find {} in {} or its parent: build it, or give "
-                  "its path",
-                  name, bench_dir.string()));
+  const fs::path built = fs::path(t800sim).parent_path() / "bench" / "simgrid_model";
+  std::error_code ec;
+  return fs::is_regular_file(built, ec) && access(built.c_str(), X_OK) == 0 ? built.string() : "";
 }
 
 // --- the SimGrid plans, from t800sim's own inputs ------------------------------------------------
@@ -265,8 +253,8 @@ std::string rate(const Row& r, double wall) {
 }
 
 int bench(const Options& o) {
-  const std::string exe = find_program(o.t800sim, "t800sim", false);
-  const std::string model = find_program(o.simgrid_model, "simgrid_model", true);
+  const std::string exe = benchmarks::find_t800sim(o.t800sim);
+  const std::string model = find_simgrid_model(o.simgrid_model, exe);
   const bool simgrid = !model.empty();
   std::cout << "t800sim: " << exe << "\nSimGrid model: "
             << (simgrid ? model
@@ -312,11 +300,6 @@ int bench(const Options& o) {
 }
 
 }  // namespace
-
-// libsystemc.so needs an sc_main; this program has its own main and never starts SystemC.
-int sc_main(int, char**) {
-  return 0;
-}
 
 int main(int argc, char** argv) {
   Options o;

@@ -12,19 +12,23 @@ namespace network {
 namespace {
 
 // Rendezvous on one transputer: the first to arrive executes its instruction and deschedules; the
-// second copies the message (2w+19) and wakes the first.
+// second copies the message (2w+19) and wakes the first. The first marks the channel word as it
+// starts its instruction, as the T800 does within the instruction: the other end arriving while it
+// is still being charged finds it there (a reader taking a protocol's next item at once, say).
 void internal_out(Process& p, Channel& c, t800::Message m) {
   if (c.waiting_writer) throw std::logic_error("two writers on channel " + c.name);
   if (c.waiting_reader) {
     p.communicate(m.bytes, true);
-    c.slot = std::move(m);
+    *c.reader_destination = std::move(m);
     c.waiting_reader = nullptr;
     c.handed_over.notify(sc_core::SC_ZERO_TIME);
     return;
   }
-  p.communicate(m.bytes, false);
+  const std::int64_t bytes = m.bytes;
   c.slot = std::move(m);
   c.waiting_writer = &p;
+  if (c.alting_reader) c.alting_reader->wake_alt();  // the ALT's guard is ready now
+  p.communicate(bytes, false);
   p.deschedule();
   while (c.waiting_writer == &p) sc_core::wait(c.handed_over);
   p.reschedule();
@@ -38,15 +42,31 @@ t800::Message internal_in(Process& p, Channel& c) {
     c.handed_over.notify(sc_core::SC_ZERO_TIME);
     return std::move(c.slot);
   }
-  p.communicate(0, false);  // the reader's length is not known here until the message is (U)
+  // The writer copies straight into the reader's variable: the slot may hold the writer's next
+  // message before this process runs again.
+  t800::Message received;
   c.waiting_reader = &p;
+  c.reader_destination = &received;
+  p.communicate(0, false);  // the reader's length is not known here until the message is (U)
   p.deschedule();
   while (c.waiting_reader == &p) sc_core::wait(c.handed_over);
   p.reschedule();
-  return std::move(c.slot);
+  return received;
 }
 
 }  // namespace
+
+bool input_ready(const Channel& c) {
+  switch (c.kind) {
+    case Channel::Kind::internal:
+      return c.waiting_writer != nullptr;
+    case Channel::Kind::direct:
+      return c.link->input_pending(1 - c.writer_end);
+    case Channel::Kind::routed:
+      return !c.mailbox.empty();
+  }
+  return false;
+}
 
 const char* to_string(Channel::Kind kind) {
   switch (kind) {

@@ -1,12 +1,15 @@
 // Channels between processes, as the occam program would have had them:
-//  * internal: both ends on one transputer; a rendezvous, the second process to arrive copies (2w+19 cycles);
-//  * direct: the two ends on neighbouring transputers, alone on that link direction; the bytes move by DMA;
-//  * routed: anything else (not neighbours, or a link direction shared by several channels): store-and-forward
+//  * internal: both ends on one transputer; a rendezvous, the second process to arrive copies
+//  (2w+19 cycles);
+//  * direct: the two ends on neighbouring transputers, alone on that link direction; the bytes move
+//  by DMA;
+//  * routed: anything else (not neighbours, or a link direction shared by several channels):
+//  store-and-forward
 //    through software router processes on every transputer the message enters (router.cpp).
 #pragma once
 
 #include <cstdint>
-#include <deque>
+#include <list>
 #include <string>
 #include <vector>
 
@@ -27,17 +30,23 @@ struct Channel {
   int from = 0, to = 0;  // node indices (the host is Machine::kHost)
   Kind kind = Kind::internal;
   std::vector<int> path;  // nodes from `from` to `to`, for direct and routed channels
+  // The processes that last output and input on it (or are trying to), for deadlock reports.
+  Process* last_writer = nullptr;
+  Process* last_reader = nullptr;
 
-  // internal rendezvous
+  // internal rendezvous; a reader in an ALT with this channel's guard enabled (occam's enbc)
+  Process* alting_reader = nullptr;
   Process* waiting_reader = nullptr;
+  t800::Message* reader_destination = nullptr;  // where the waiting reader's message goes
   Process* waiting_writer = nullptr;
-  t800::Message slot;
+  t800::Message slot;  // the waiting writer's message
   sc_core::sc_event handed_over;
   // direct: the link and the writer's end of it
   t800::Link* link = nullptr;
   int writer_end = 0;
-  // routed: messages delivered at `to` by its router, waiting for the reader
-  std::deque<t800::Message> mailbox;
+  // routed: messages delivered at `to` by its router, waiting for the reader (a list: an empty one
+  // allocates nothing, t800/link.hpp)
+  std::list<t800::Message> mailbox;
   sc_core::sc_event mail;
 };
 
@@ -51,6 +60,8 @@ struct RoutedEnvelope {
 
 void send(Process& p, Channel& c, t800::Message m);
 t800::Message receive(Process& p, Channel& c);
+// Whether an input on the channel would not wait (an ALT's guard is ready).
+bool input_ready(const Channel& c);
 
 // The pieces routers are built from.
 void link_out(Process& p, t800::Link& link, int end, t800::Message m);

@@ -13,7 +13,8 @@ struct SourcePos {
   int column = 0;
 };
 
-// Formats as "file:line:column: error: message" (GCC style, so editors can jump to it).
+// Formats as "file:line:column: error: message" (GCC style, so editors can jump to it), bounded by
+// bounded_message (an override's flag or an echoed value may be a megabyte long).
 class ConfigError : public std::runtime_error {
  public:
   ConfigError(SourcePos where, const std::string& message);
@@ -24,5 +25,10 @@ class ConfigError : public std::runtime_error {
   SourcePos where_;
   std::string message_;
 };
+
+// `text` with every word (a run without spaces) longer than 300 bytes cut to its first 120 and last
+// 60 bytes around "...[N bytes]...", and the whole cut to 4 KB: a message echoes what the user
+// gave, which may be huge, and must stay readable.
+std::string bounded_message(const std::string& text);
 
 }  // namespace network

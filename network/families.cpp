@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 namespace network {
@@ -11,9 +12,9 @@ namespace {
 constexpr Family kFamilies[] = {Family::tree, Family::chain, Family::ring, Family::mesh,
                                 Family::hypercube};
 
-// Generators are O(n^2) to validate; far beyond any transputer network anyone built, and it keeps a
-// mistyped "--set network.workers=1000000" from hanging the tool.
-constexpr int kMaxWorkers = 1023;
+// P0 and the workers: the largest network simulated (topology.hpp); it also keeps a mistyped
+// "--set network.workers=1000000" from hanging the tool.
+constexpr int kMaxWorkers = kMaxProcessors - 1;
 
 // A topology under construction: P0..Pn, P0.link0 to the host, every item at `where`.
 struct Builder {
@@ -93,13 +94,42 @@ void build_mesh(Builder& b, int workers) {
   }
 }
 
-// Dimension k joins Pi and Pi^(2^k) through link k+1 on both sides; link0 stays free (P0's is the
-// host's), which is why a T800 hypercube stops at three dimensions.
+// A T800 has four links and P0 keeps one for the host, so one transputer per cube node stops at three
+// dimensions. Beyond, each cube node is a chain of c transputers (c a power of two) that share its
+// dimensions, two each: the smallest c with 2c >= d, as 2^d * c = n+1.
+struct CubeShape {
+  int dimensions, chain;
+};
+
+std::optional<CubeShape> cube_shape(int nodes) {
+  if (nodes < 2 || (nodes & (nodes - 1)) != 0) return std::nullopt;  // not a power of two
+  for (int chain = 1; chain <= nodes; chain *= 2) {
+    int d = 0;
+    while ((chain << d) < nodes) ++d;
+    if (d <= (chain == 1 ? 3 : 2 * chain)) return CubeShape{d, chain};
+  }
+  return std::nullopt;
+}
+
+// One transputer per cube node (c = 1): dimension k joins Pi and Pi^(2^k) through link k+1 on both
+// sides; link0 stays free (P0's is the host's). Chains (c > 1): transputer j of cube node v is
+// P(v*c + j); link0 and link1 join it to j-1 and j+1 of its chain, and links 2 and 3 carry dimensions
+// 2j and 2j+1 to transputer j of the neighbouring cube nodes; P0's link0 is the host's.
 void build_hypercube(Builder& b, int workers) {
-  const int nodes = workers + 1;
-  for (int k = 0; (1 << k) < nodes; ++k)
-    for (int p = 0; p < nodes; ++p)
-      if ((p & (1 << k)) == 0) b.link(p, k + 1, p | (1 << k), k + 1);
+  const CubeShape shape = *cube_shape(workers + 1);
+  const int c = shape.chain;
+  if (c > 1)
+    b.topology.description += ": " + std::to_string(1 << shape.dimensions) + " cube nodes of " +
+                              std::to_string(c) + " transputers in a chain, " +
+                              std::to_string(shape.dimensions) + " dimensions";
+  for (int v = 0; v < (1 << shape.dimensions); ++v)
+    for (int j = 0; j + 1 < c; ++j) b.link(v * c + j, 1, v * c + j + 1, 0);
+  for (int k = 0; k < shape.dimensions; ++k) {
+    const int link = c == 1 ? k + 1 : 2 + k % 2;
+    const int j = c == 1 ? 0 : k / 2;
+    for (int v = 0; v < (1 << shape.dimensions); ++v)
+      if ((v & (1 << k)) == 0) b.link(v * c + j, link, (v | (1 << k)) * c + j, link);
+  }
 }
 
 void check_size(Family family, int workers, const SourcePos& where) {
@@ -114,11 +144,10 @@ void check_size(Family family, int workers, const SourcePos& where) {
   if (family == Family::ring && workers < 2)
     throw ConfigError(where, "a ring needs at least 2 workers (3 processors with P0), got " +
                                  std::to_string(workers));
-  const int nodes = workers + 1;
-  if (family == Family::hypercube && nodes != 2 && nodes != 4 && nodes != 8)
+  if (family == Family::hypercube && !cube_shape(workers + 1))
     throw ConfigError(where, "a hypercube of " + std::to_string(workers) +
-                                 " workers is not possible: P0 plus the workers must be 2, 4 or 8 "
-                                 "processors (one link kept for the host), so workers = 1, 3 or 7");
+                                 " workers is not possible: P0 plus the workers must be a power of "
+                                 "two, so workers = 1, 3, 7, 15, ..., 1023");
 }
 
 }  // namespace

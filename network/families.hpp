@@ -19,12 +19,12 @@ std::string_view to_string(Family family);
 std::vector<std::string> family_names();
 
 // tree: the paper's farm trees (Figs. 3-5): P0 has three children (its fourth link goes to the
-// host); every
-//       further node has up to three children; a new level is filled round-robin over its parents,
-//       so 1, 3, 6 and 9 workers give exactly the paper's networks.
+// host); every further node has up to three children; a new level is filled round-robin over its
+// parents, so 1, 3, 6 and 9 workers give exactly the paper's networks.
 // chain: P0 - P1 - ... - Pn.  ring: the chain closed.  mesh: the most nearly square 2-D grid of n+1
-// nodes, P0 in a corner.  hypercube: n+1 must be a power of two and at most 8 (4 links, one kept
-// for the host). Throws ConfigError (with `where`) when the family cannot be built with that many
+// nodes, P0 in a corner.  hypercube: n+1 must be a power of two; up to 8 processors one per cube node
+// (4 links, one kept for the host), beyond that each cube node a chain of 2, 4, ... transputers
+// (families.cpp). Throws ConfigError (with `where`) when the family cannot be built with that many
 // workers.
 Topology generate(Family family, int workers, const t800::ProcessorConfig& processor,
                   const SourcePos& where);

@@ -1,8 +1,11 @@
 #include "network/machine.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <stdexcept>
+
+#include "network/wait_cycle.hpp"
 
 namespace network {
 
@@ -190,7 +193,7 @@ void Machine::start_router(int node, int from, t800::Link& link, int end) {
 // largest frame of the PROCs each runs, plus the words below a process's workspace pointer the
 // scheduler uses), their arrays, the code of every PROC and library routine once.
 void Machine::place_memory() {
-  constexpr int kSchedulerWords = 5;         // Iptr, link, state, timer link and time below Wptr
+  constexpr int kSchedulerWords = 5;  // Iptr, link, state, timer link and time below Wptr
   constexpr int kUndeclaredFrameWords = 16;  // a process whose code was not declared (U)
   for (int node = 0; node < processors(); ++node) {
     t800::MemoryDemand demand;
@@ -253,7 +256,8 @@ Process& Machine::spawn(int node, const std::string& name, t800::Priority priori
     PooledThread* t = threads_.back().get();
     t->process = p;
     t->body = std::move(body);
-    sc_core::sc_spawn([this, t] { pooled_thread(*t); }, sc_core::sc_gen_unique_name("proc"));
+    handles_.push_back(
+        sc_core::sc_spawn([this, t] { pooled_thread(*t); }, sc_core::sc_gen_unique_name("proc")));
     return *p;
   }
   PooledThread* t = idle_threads_.back();
@@ -291,18 +295,79 @@ void Machine::prepare() {
 
 std::vector<BlockedProcess> Machine::run() {
   prepare();
-  for (auto& [p, body] : pending_)
-    sc_core::sc_spawn([p, body] { run_body(p, body); }, sc_core::sc_gen_unique_name("proc"));
+  for (auto& pending : pending_)  // not a structured binding: clang 14 cannot capture those
+    handles_.push_back(sc_core::sc_spawn([p = pending.first, body = pending.second] { run_body(p, body); },
+                                         sc_core::sc_gen_unique_name("proc")));
   pending_.clear();
-  sc_core::sc_start();
+  elaboration_s_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
+  if (options_.max_sim_s > 0 || options_.max_wall_s > 0)
+    run_with_limits();
+  else
+    sc_core::sc_start();
+  events_ = sc_core::sc_delta_count();
   end_us_ = sc_core::sc_time_stamp().to_seconds() * 1e6;
   for (auto& t : transputers_) t->activity().close(sc_core::sc_time_stamp());
 
   std::vector<BlockedProcess> blocked;
   for (auto& p : processes_)
-    if (!p->ended() && !p->daemon())
-      blocked.push_back({p->name(), node_name(p->node()), p->status()});
+    if (limit_ == Limit::none && !p->ended() && !p->daemon())
+      blocked.push_back({p->name(), node_name(p->node()), p->status(), waits_for(*this, *p)});
+  if (!blocked.empty()) wait_cycle_ = network::wait_cycle(*this);
+  end_threads();
   return blocked;
+}
+
+// The simulation in slices of simulated time, the wall clock read between them; a slice is doubled
+// while it takes under 20 ms of wall time and halved above 200 ms, so the clock is read a few times a
+// second whatever the model's speed. A slice runs every event up to and at its end, and reaches at
+// least the next pending event, so the slices run the same events in the same order as one sc_start.
+void Machine::run_with_limits() {
+  using sc_core::sc_time;
+  const auto wall_start = std::chrono::steady_clock::now();
+  const auto wall_s = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  };
+  const sc_time sim_limit = options_.max_sim_s > 0 ? sc_time(options_.max_sim_s, sc_core::SC_SEC)
+                                                   : sc_core::sc_max_time();
+  sc_time slice = options_.max_wall_s > 0 ? sc_time(1, sc_core::SC_US) : sim_limit;
+  // Before the first sc_start nothing is pending yet: the processes start in its initialisation.
+  for (bool first = true; first || sc_core::sc_pending_activity(); first = false) {
+    const sc_time now = sc_core::sc_time_stamp();
+    const sc_time next = first ? sc_core::SC_ZERO_TIME : sc_core::sc_time_to_pending_activity();
+    if (next > sim_limit - now) {
+      limit_ = Limit::sim_time;  // the next event lies beyond the limit
+      return;
+    }
+    const std::uint64_t deltas = sc_core::sc_delta_count();
+    const double before = wall_s();
+    sc_core::sc_start(std::min(std::max(slice, next), sim_limit - now), sc_core::SC_EXIT_ON_STARVATION);
+    if (sc_core::sc_time_stamp() == now && sc_core::sc_delta_count() == deltas) return;  // nothing moved
+    if (options_.max_wall_s > 0 && wall_s() >= options_.max_wall_s) {
+      if (sc_core::sc_pending_activity()) limit_ = Limit::wall_time;
+      return;
+    }
+    const double took = wall_s() - before;
+    if (took < 0.02 && slice < sc_core::sc_max_time() / 2) slice = slice * 2;
+    if (took > 0.2 && slice > sc_time(2, sc_core::SC_PS)) slice = slice / 2;
+  }
+}
+
+// Threads still waiting when the run is over (the routers, idle pooled threads, the processes of a
+// deadlock) are killed, so that each unwinds its stack and frees what it holds. SystemC 2.3.4 cannot
+// kill from sc_main (it dereferences the current process, which there is none of), so a thread spawned
+// for the purpose does, in one more delta cycle at the same simulated time (after a limit, other
+// events are pending: they are not run).
+void Machine::end_threads() {
+  std::vector<sc_core::sc_process_handle> live;
+  for (const sc_core::sc_process_handle& h : handles_)
+    if (h.valid() && !h.terminated()) live.push_back(h);
+  handles_.clear();
+  if (live.empty()) return;
+  sc_core::sc_spawn([live]() mutable {
+    for (sc_core::sc_process_handle& h : live) h.kill();
+  }, sc_core::sc_gen_unique_name("end_threads"));
+  sc_core::sc_start(sc_core::SC_ZERO_TIME);  // one delta cycle: nothing else is simulated
 }
 
 }  // namespace network

@@ -6,6 +6,9 @@
 // SystemC cannot be restarted (docs/architecture.md).
 #pragma once
 
+#include <chrono>
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -26,14 +29,23 @@ struct MachineOptions {
   t800::LinkConfig link;  // default for connections without their own speed
   t800::Precision precision = t800::Precision::real64;
   double code_efficiency = 1.0;
-  bool checked = true;          // occam's run-time checks compiled into the generated code
+  bool checked = true;  // occam's run-time checks compiled into the generated code
   bool keep_intervals = false;  // for traces
   Fidelity fidelity;
+  // Limits (seconds; 0 = none): the run stops when its simulated time or the host's wall time reaches
+  // one, with processes still running (Machine::limit_reached says which).
+  double max_sim_s = 0, max_wall_s = 0;
+  // Called by workloads that know how far they are (a trajectory: steps done of all), for a progress
+  // display; may be empty.
+  std::function<void(std::int64_t done, std::int64_t total)> progress;
 };
+
+enum class Limit { none, sim_time, wall_time };
 
 // A process that had not ended when the simulation ran out of events.
 struct BlockedProcess {
   std::string process, processor, status;
+  std::string waits_for;  // whom, network/wait_cycle.hpp
 };
 
 class Machine {
@@ -58,6 +70,11 @@ class Machine {
   // Runs until every process has ended or nothing can happen any more; returns the processes left
   // blocked (empty on a clean end: a deadlock otherwise).
   std::vector<BlockedProcess> run();
+  // Which limit stopped the run (MachineOptions::max_sim_s, max_wall_s), if one did.
+  Limit limit_reached() const { return limit_; }
+  // After a deadlock, the cycle of waits among the blocked processes, if they close one
+  // (network/wait_cycle.hpp).
+  const std::vector<std::string>& wait_cycle() const { return wait_cycle_; }
   // What run() does first: channels routed, memory of every processor placed (footprints known).
   // Called alone, it lets a tool look at the machine without running it.
   void prepare();
@@ -85,6 +102,10 @@ class Machine {
   const std::vector<LinkInfo>& links() const { return links_; }
   const std::vector<std::unique_ptr<Channel>>& channels() const { return channels_; }
   double simulated_us() const { return end_us_; }
+  std::uint64_t events() const { return events_; }  // SystemC delta cycles of the run
+  // Host seconds from this machine's construction to the start of the simulation: the network, the
+  // workload's processes and channels, routes, memory (set by run()).
+  double elaboration_s() const { return elaboration_s_; }
 
   // The link from node a to its neighbour b, and a's end of it (of several, the first connection
   // listed); nullopt when they are not neighbours.
@@ -122,11 +143,19 @@ class Machine {
     sc_core::sc_event assigned;
   };
   void pooled_thread(PooledThread& t);
+  void end_threads();
+  void run_with_limits();
+  std::vector<sc_core::sc_process_handle> handles_;  // every thread spawned for a process
   std::vector<std::unique_ptr<PooledThread>> threads_;
   std::vector<PooledThread*> idle_threads_;
   std::vector<int> ended_;
   bool finalised_ = false;
   double end_us_ = 0;
+  std::uint64_t events_ = 0;
+  std::chrono::steady_clock::time_point created_ = std::chrono::steady_clock::now();
+  double elaboration_s_ = 0;
+  Limit limit_ = Limit::none;
+  std::vector<std::string> wait_cycle_;
 };
 
 }  // namespace network

@@ -1,5 +1,7 @@
 #include "network/process.hpp"
 
+#include <cmath>
+
 #include "network/channel.hpp"
 #include "network/machine.hpp"
 #include "t800/timing_table.hpp"
@@ -48,13 +50,21 @@ void Process::reschedule() {
 
 void Process::out(Channel& channel, t800::Message message) {
   set_status("out on channel " + channel.name);
+  channel.last_writer = this;
+  channel_ = &channel;
+  outputting_ = true;
   send(*this, channel, std::move(message));
+  channel_ = nullptr;
   set_status("running");
 }
 
 t800::Message Process::in(Channel& channel) {
   set_status("in on channel " + channel.name);
+  channel.last_reader = this;
+  channel_ = &channel;
+  outputting_ = false;
   t800::Message m = receive(*this, channel);
+  channel_ = nullptr;
   set_status("running");
   return m;
 }
@@ -71,11 +81,69 @@ void Process::par(const std::vector<Body>& branches) {
                                        }));
   }
   set_status("waiting for its parallel branches");
+  branches_ = children;
+  deschedule();
+  for (Process* child : children)
+    while (!child->ended()) sc_core::wait(child->ended_event());
+  branches_.clear();
+  reschedule();
+  set_status("running");
+}
+
+void Process::pri_par(const Body& high, const std::vector<Body>& low) {
+  std::vector<Process*> children;
+  auto start = [&](const Body& body, t800::Priority priority, std::size_t i) {
+    compute(t800::timing::start_process_cycles(), "startp");
+    children.push_back(
+        &machine_.spawn(node_, name() + "." + std::to_string(i), priority, [body](Process& child) {
+          body(child);
+          child.compute(t800::timing::end_process_cycles(), "endp");
+        }));
+  };
+  start(high, t800::Priority::high, 0);
+  for (std::size_t i = 0; i < low.size(); ++i) start(low[i], t800::Priority::low, i + 1);
+  set_status("waiting for its parallel branches");
   deschedule();
   for (Process* child : children)
     while (!child->ended()) sc_core::wait(child->ended_event());
   reschedule();
   set_status("running");
+}
+
+double Process::tick_us() const {
+  return descriptor_.priority == t800::Priority::high ? 1.0 : 64.0;
+}
+
+std::int64_t Process::clock() const {
+  return std::int64_t(std::floor(now_us() / tick_us() + 1e-9));
+}
+
+sc_core::sc_time Process::time_after(std::int64_t t) const {
+  return sc_core::sc_time(double(t + 1) * tick_us(), sc_core::SC_US);
+}
+
+void Process::wait_after(std::int64_t t) {
+  const bool future = clock() <= t;
+  run_instructions({{t800::isa::Op::ldl, 1, 0, false, {t800::isa::Region::workspace, -1}, "time"},
+                    {t800::isa::Op::tin,
+                     0,
+                     future,
+                     false,
+                     {t800::isa::Region::workspace, -1},
+                     "TIMER ? AFTER"}});
+  if (!future) return;
+  set_status("waiting for its timer");
+  deschedule();
+  sc_core::wait(time_after(t) - sc_core::sc_time_stamp());
+  reschedule();
+  set_status("running");
+}
+
+void Process::run_instructions(const t800::isa::Sequence& code) {
+  if (on_host()) return;
+  const std::int64_t cycles = machine_.compute_model(node_).process_cycles(code);
+  machine_.transputer(node_).cpu().execute(descriptor_, cycles, t800::ProcessorState::communicate,
+                                           {});
 }
 
 void Process::mark_ended() {

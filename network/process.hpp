@@ -13,6 +13,7 @@
 
 #include "t800/compute_work.hpp"
 #include "t800/cpu.hpp"
+#include "t800/isa/instruction.hpp"
 #include "t800/message.hpp"
 #include "t800/operation_mix.hpp"
 
@@ -39,6 +40,23 @@ class Process {
   t800::Message in(Channel& channel);
   // Runs the branches as parallel processes on the same processor and returns when all have ended.
   void par(const std::vector<Body>& branches);
+  // PRI PAR: the first branch at high priority, the others at low.
+  void pri_par(const Body& high, const std::vector<Body>& low);
+
+  // The process's TIMER (occam's `TIMER ? t`): ticks of 1 us at high priority, 64 us at low
+  // priority (the T800's two clocks).
+  std::int64_t clock() const;
+  double tick_us() const;
+  // TIMER ? AFTER t: waits until the clock is after t (tin).
+  void wait_after(std::int64_t t);
+  // When the clock first reads more than t.
+  sc_core::sc_time time_after(std::int64_t t) const;
+  // Charges a short sequence of process instructions (ALT's, a timer's) to the CPU.
+  void run_instructions(const t800::isa::Sequence& code);
+  // An ALT waiting on this process's guards is woken by a writer arriving on one of them.
+  sc_core::sc_event& alt_event() { return alt_event_; }
+  void wake_alt() { alt_event_.notify(sc_core::SC_ZERO_TIME); }
+  t800::Priority priority() const { return descriptor_.priority; }
 
   int node() const { return node_; }  // processor index, or Machine::kHost
   const std::string& name() const { return descriptor_.name; }
@@ -54,6 +72,11 @@ class Process {
   // What the process is doing, for deadlock reports.
   void set_status(std::string status) { status_ = std::move(status); }
   const std::string& status() const { return status_; }
+  // What it waits on, for the cycle of waits in a deadlock report (network/wait_cycle.hpp): the channel
+  // of the `in` or `out` it is in (null otherwise), or the PAR branches it waits for.
+  const Channel* channel() const { return channel_; }
+  bool outputting() const { return outputting_; }
+  const std::vector<Process*>& branches() const { return branches_; }
   // Ends the process's life cycle (called by the machine once the body returns).
   void mark_ended();
   bool ended() const { return ended_; }
@@ -68,7 +91,11 @@ class Process {
   std::string status_ = "not started";
   bool ended_ = false;
   bool daemon_ = false;
+  const Channel* channel_ = nullptr;
+  bool outputting_ = false;
+  std::vector<Process*> branches_;
   sc_core::sc_event ended_event_;
+  sc_core::sc_event alt_event_;
 };
 
 }  // namespace network

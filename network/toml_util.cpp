@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+
+#include "network/toml_limits.hpp"
 
 namespace network {
 
@@ -33,10 +36,28 @@ toml::table parse_toml_file(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw ConfigError({path, 0, 0}, "this is a directory, not a " + what);
   if (!fs::exists(path, ec)) throw ConfigError({path, 0, 0}, "no such " + what);
+  const auto size = fs::file_size(path, ec);
+  if (!ec && size > TomlLimits::kMaxBytes)  // not read at all (a device or a pipe has no size)
+    throw ConfigError({path, 0, 0}, "the " + what + " is " + std::to_string(size) +
+                                        " bytes; at most " + std::to_string(TomlLimits::kMaxBytes) +
+                                        " are read");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError({path, 0, 0}, "cannot open the " + what);
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > TomlLimits::kMaxBytes) break;  // the limit check below says so
+  }
+  return parse_toml_text(text, path);
+}
+
+toml::table parse_toml_text(std::string_view text, const std::string& file) {
+  check_toml_limits(text, file);
   try {
-    return toml::parse_file(path);
+    return toml::parse(text, std::string_view(file));
   } catch (const toml::parse_error& e) {
-    throw ConfigError(pos_of(e.source(), path), std::string(e.description()));
+    throw ConfigError(pos_of(e.source(), file), std::string(e.description()));
   }
 }
 

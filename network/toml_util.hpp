@@ -18,9 +18,13 @@ SourcePos pos_of(const toml::source_region& source, const std::string& file);
 // "string", "integer", "floating-point number", ... for "expected X, got Y" messages.
 std::string type_name(const toml::node& node);
 
-// Reads a TOML file; a missing file, a directory or a syntax error becomes a ConfigError. `what` names the
-// kind of file in the message ("scene file", "topology file").
+// Reads a TOML file; a missing file, a directory, a file beyond the limits of
+// network/toml_limits.hpp or a syntax error becomes a ConfigError. `what` names the kind of file in
+// the message ("scene file", "topology file").
 toml::table parse_toml_file(const std::string& path, const std::string& what);
+
+// The same for text already in memory; `file` names it in errors.
+toml::table parse_toml_text(std::string_view text, const std::string& file);
 
 // toml++'s value<double>() gives nothing for integers beyond 2^53; this converts any number node.
 double number(const toml::node& node);

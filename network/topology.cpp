@@ -1,5 +1,6 @@
 #include "network/topology.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -29,8 +30,18 @@ LinkEnd Topology::peer(int processor, int link) const {
   return c.a == LinkEnd{processor, link} ? c.b : c.a;
 }
 
+// One reading of the list (the first connection listed at each of p's links), not one per link.
 std::vector<int> Topology::neighbours(int p) const {
-  return LinkIndex(*this).neighbours(p);
+  int far[kLinksPerProcessor] = {-1, -1, -1, -1};
+  for (const Connection& c : connections)
+    for (const auto& [end, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
+      if (end.processor == p && end.link >= 0 && end.link < kLinksPerProcessor && far[end.link] < 0)
+        far[end.link] = other.processor;
+  std::vector<int> result;
+  for (int q :
+       far)  // link order; two links between the same pair (a ring of two) make one neighbour
+    if (q >= 0 && std::find(result.begin(), result.end(), q) == result.end()) result.push_back(q);
+  return result;
 }
 
 std::vector<int> Topology::shortest_path(int from, int to) const {
@@ -161,6 +172,10 @@ void validate(const Topology& topology) {
   if (topology.processors.empty())
     throw ConfigError(SourcePos{topology.source, 0, 0},
                       "the topology has no processors: add at least one [[processor]]");
+  if (topology.processors.size() > std::size_t(kMaxProcessors))
+    throw ConfigError(topology.processors[std::size_t(kMaxProcessors)].where,
+                      "the topology has " + std::to_string(topology.processors.size()) +
+                          " processors; at most " + std::to_string(kMaxProcessors) + " are simulated");
   check_names(topology);
   check_host(topology);
   for (const Connection& c : topology.connections) check_connection(topology, c);

@@ -1,6 +1,5 @@
 // A validated network of transputers: plain data (docs/architecture.md). Built from a topology file
-// (topology_file.hpp) or a family generator (families.hpp); elaborated into SystemC modules
-// elsewhere.
+// (topology_file.hpp) or a family generator (families.hpp); elaborated into SystemC modules elsewhere.
 #pragma once
 
 #include <optional>
@@ -46,7 +45,7 @@ struct Topology {
   int connection_at(int processor, int link) const;
   // The far end of the connection at (processor, link); requires connection_at(...) >= 0.
   LinkEnd peer(int processor, int link) const;
-  // Processor indices adjacent to p, in link order. (Each call indexes the whole topology: code
+  // Processor indices adjacent to p, in link order. (Each call reads the connection list: code
   // that asks often keeps a network::LinkIndex.)
   std::vector<int> neighbours(int p) const;
   // A shortest path from -> to as processor indices (both included); deterministic (lowest link
@@ -57,8 +56,14 @@ struct Topology {
   int host_processor() const { return host ? host->processor : -1; }
 };
 
-// Structural checks shared by files and generators: duplicate names, link index 0..3, a link end
-// used twice (including by the host), self-loops, speeds, processors unreachable from the host.
+// The largest network simulated: each transputer costs some 60 KB of host memory and about five SystemC
+// threads, whose stacks the host maps one by one (a process may hold some 65,000 maps), and routes are
+// found by search; 40,000 transputers ran out of maps (issue 12). Generated families stop here too.
+constexpr int kMaxProcessors = 1024;
+
+// Structural checks shared by files and generators: duplicate names, link index 0..3, a link end used
+// twice (including by the host), self-loops, speeds, processors unreachable from the host, more than
+// kMaxProcessors.
 // Throws ConfigError at the offending item's `where`.
 void validate(const Topology& topology);
 

@@ -208,6 +208,10 @@ Topology Reader::read() {
   const toml::array* processors = tables("processor");
   if (!processors || processors->empty())
     fail(root_, "the topology has no processors: add at least one [[processor]] with a name");
+  if (processors->size() > std::size_t(kMaxProcessors))  // before reading them all
+    fail(*processors->get(std::size_t(kMaxProcessors)),
+         "the topology has " + std::to_string(processors->size()) + " processors; at most " +
+             std::to_string(kMaxProcessors) + " are simulated");
   for (const toml::node& p : *processors) t.processors.push_back(processor(*p.as_table()));
   const toml::node* host = root_.get("host");
   if (!host)

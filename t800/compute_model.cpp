@@ -69,19 +69,22 @@ std::int64_t ComputeModel::communication_cycles(std::int64_t bytes, bool copies)
   if (found != communication_.end()) return found->second;
   const isa::MemoryRef workspace{isa::Region::workspace, -1};
   const std::int64_t words = copies ? (bytes + 3) / 4 : 0;  // part words count as whole
-  const isa::Sequence code = {
+  const std::int64_t cycles = process_cycles({
       {isa::Op::ldlp, 0, 0, false, {}, "the message's buffer"},
       {isa::Op::ldl, 1, 0, false, workspace, "the channel"},
       {isa::Op::ldc, bytes, 0, false, {}, "its length"},
       {isa::Op::in, 0, words, false, workspace, "in (or out)"},
-  };
+  });
+  communication_.emplace(key, cycles);
+  return cycles;
+}
+
+std::int64_t ComputeModel::process_cycles(const isa::Sequence& code) const {
   MemoryView view;
   view.workspace_external = memory_.workspace_external();
   view.code_external = memory_.code_external("");
   view.external_cycles = memory_.external_cycles();
-  const std::int64_t cycles = time_sequence(code, processor_, view).cycles;
-  communication_.emplace(key, cycles);
-  return cycles;
+  return time_sequence(code, processor_, view).cycles;
 }
 
 }  // namespace t800

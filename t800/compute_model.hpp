@@ -33,10 +33,14 @@ class ComputeModel {
   ComputeModel(const ProcessorConfig& config, const ComputeSettings& settings);
 
   std::int64_t cycles(const ComputeWork& work) const;
-  // One channel communication as occam compiles it (docs/t800-timing.md, "Communication and processes"): the
-  // buffer's address, the channel word, the length, then in or out -- 2w + 19 when this end copies
-  // the message (an internal channel's second party), 19 when a link engine moves it.
+  // One channel communication as occam compiles it (docs/t800-timing.md, "Communication and
+  // processes"): the buffer's address, the channel word, the length, then in or out -- 2w + 19 when
+  // this end copies the message (an internal channel's second party), 19 when a link engine moves
+  // it.
   std::int64_t communication_cycles(std::int64_t bytes, bool copies) const;
+  // A short sequence of the process's own instructions (ALT's enables and disables, a timer's
+  // input), timed with this processor's table and its workspace's placement.
+  std::int64_t process_cycles(const isa::Sequence& code) const;
 
   // This processor's code for a recorded kernel (compiled once).
   const codegen::CodeUnit& code(const std::shared_ptr<const codegen::Recording>& kernel) const;

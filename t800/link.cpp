@@ -52,6 +52,7 @@ void Link::transmit(int from, Message message) {
   const std::int64_t ticket = ++d.submitted;
   d.queue.push_back(std::move(message));
   d.wire_wake.notify(SC_ZERO_TIME);
+  d.submitted_event.notify(SC_ZERO_TIME);
   while (d.completed < ticket) sc_core::wait(d.sent_event);
 }
 
@@ -86,7 +87,13 @@ Message Link::receive(int to) {
   while (d.delivered.empty()) sc_core::wait(d.delivered_event);
   Message m = std::move(d.delivered.front());
   d.delivered.pop_front();
+  ++d.taken;
   return m;
+}
+
+bool Link::input_pending(int to) const {
+  const Direction& d = dir_[1 - to];
+  return d.submitted > d.taken;
 }
 
 void Link::DmaCount::add(std::int64_t n, const sc_time& at) {

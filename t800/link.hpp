@@ -19,7 +19,7 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
+#include <list>
 #include <string>
 
 #include <systemc>
@@ -43,6 +43,12 @@ class Link : public sc_core::sc_module {
   // Called from the receiving process's thread at end `to`: arms the input DMA and returns the next
   // message.
   Message receive(int to);
+
+  // For ALT: a message for end `to` is on its way (its sender has started the output) and no input
+  // has taken it yet; the event fires whenever a sender starts one (U: a T800 link channel becomes
+  // ready when the first byte arrives, one data packet later).
+  bool input_pending(int to) const;
+  sc_core::sc_event& input_pending_event(int to) { return dir_[1 - to].submitted_event; }
 
   // Nothing queued, in flight or owed in either direction (an input may be armed, waiting): what
   // happens on the link from now on does not depend on its past.
@@ -92,13 +98,17 @@ class Link : public sc_core::sc_module {
     sc_core::sc_time start;
   };
 
+  // Message queues are lists: an empty std::deque already holds a 512-byte block, and a 1024-transputer
+  // network has thousands of link directions, almost all of them idle (issue 12: host memory per
+  // transputer).
   struct Direction {
     // sending DMA
-    std::deque<Message> queue;
+    std::list<Message> queue;
     std::int64_t sent = 0, acked = 0;
     bool may_send = true;
     std::int64_t submitted = 0, completed = 0;  // message sequence numbers
-    sc_core::sc_event sent_event;
+    std::int64_t taken = 0;                     // messages an input has taken
+    sc_core::sc_event sent_event, submitted_event;
     // receiving DMA
     bool armed = false;
     bool ack_owed = false;
@@ -107,7 +117,7 @@ class Link : public sc_core::sc_module {
     bool receiver_counted = false;
     Message incoming;
     std::int64_t received = 0;
-    std::deque<Message> delivered;
+    std::list<Message> delivered;
     sc_core::sc_event delivered_event;
     // wire of this direction's data, and its pending acknowledges for the other direction
     int acks_pending = 0;

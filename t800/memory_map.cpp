@@ -22,12 +22,11 @@ const char* to_string(MemoryRegion::Kind kind) {
   return "?";
 }
 
-// The occam toolset loads the application at #80000150 on a T800 (its memory maps; the words
-// between MemStart and there hold its run-time system); on a T414 the same run-time system
-// follows MemStart #80000048.
-int loader_bytes(const ProcessorModel& processor) {
+// The occam toolset loads the application at #80000150 on a T800 (its memory maps): the words
+// between MemStart and there hold its run-time system, which a T414 has above its own MemStart
+// too (U: the T414's layout was not observed).
+int loader_bytes() {
   constexpr int kT800ApplicationStart = 0x150, kT800MemStart = 0x70;
-  (void)processor;
   return kT800ApplicationStart - kT800MemStart;
 }
 
@@ -61,7 +60,7 @@ MemoryMap::MemoryMap(const ProcessorModel& processor, const MemoryConfig& config
     regions_.push_back(r);
   };
   add(Kind::reserved, "below MemStart", processor.reserved_bytes, Placement::on_chip);
-  add(Kind::reserved, "run-time system", loader_bytes(processor), Placement::on_chip);
+  add(Kind::reserved, "run-time system", loader_bytes(), Placement::on_chip);
   add(Kind::workspace, "workspaces", demand.workspace_bytes, config.data);
   add(Kind::data, "arrays", demand.data_bytes, config.data);
   for (const MemoryDemand::Code& c : demand.code) add(Kind::code, c.name, c.bytes, config.code);

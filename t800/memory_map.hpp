@@ -1,6 +1,7 @@
 // What lives where in one processor's memory: its footprint (the code of the processes placed on
 // it, their workspaces and arrays, the reserved low memory) laid out from the bottom of on-chip
-// RAM, and which parts therefore sit in external memory (docs/compute-model.md, "On-chip memory that matters").
+// RAM, and which parts therefore sit in external memory (docs/compute-model.md, "On-chip memory
+// that matters").
 //
 // The layout follows the INMOS occam toolset's memory maps: the words below MemStart are the
 // processor's own, the loaded program's run-time system takes the next ones (the application
@@ -78,7 +79,7 @@ class PlacementError : public std::runtime_error {
 
 // The toolset's run-time system's share of on-chip RAM above MemStart (#80000150 - #80000070 on
 // a T800), and the external access's cycles with wait states.
-int loader_bytes(const ProcessorModel& processor);
+int loader_bytes();
 int external_access_cycles(const ProcessorModel& processor, int wait_states);
 
 }  // namespace t800

@@ -3,6 +3,7 @@
 
 #include "network/config_error.hpp"
 #include "tools/commands.hpp"
+#include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 
 namespace tools {
@@ -14,7 +15,7 @@ void add_check_command(CLI::App& app) {
   cmd->add_option("file", *file, "scene or topology TOML file")->required();
   cmd->callback([file] {
     run_command([&] {
-      const std::string summary = check_file(*file);  // throws before anything is printed
+      const std::string summary = check_input(*file);  // throws before anything is printed
       std::cout << "ok: " << summary << "\n";
       return kExitOk;
     });

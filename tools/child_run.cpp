@@ -2,9 +2,13 @@
 
 #include <sys/resource.h>
 
+#include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <array>
 #include <cerrno>
@@ -20,6 +24,28 @@ std::string self_executable() {
   const ssize_t n = readlink("/proc/self/exe", buffer.data(), buffer.size() - 1);
   if (n <= 0) throw std::runtime_error("cannot find the t800sim executable (/proc/self/exe)");
   return std::string(buffer.data(), std::size_t(n));
+}
+
+int spawn_child(const std::vector<std::string>& argv, int out_fd, int err_fd) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid != 0) return pid;
+  // The child, until exec: only what is safe between fork and exec.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(127);  // the parent died before the line above
+  const int null = open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (null >= 0) dup2(null, STDIN_FILENO);
+  dup2(out_fd, STDOUT_FILENO);
+  dup2(err_fd, STDERR_FILENO);
+  setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+  execv(args[0], args.data());
+  const std::string message = "cannot execute " + argv[0] + ": " + std::strerror(errno) + "\n";
+  if (write(STDERR_FILENO, message.data(), message.size()) < 0) {
+  }
+  _exit(127);
 }
 
 namespace {
@@ -52,35 +78,19 @@ void drain(int out_fd, int err_fd, ChildOutput& result) {
 }  // namespace
 
 ChildOutput run_program(const std::string& exe, const std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  argv.push_back(const_cast<char*>(exe.c_str()));
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
+  std::vector<std::string> argv{exe};
+  argv.insert(argv.end(), args.begin(), args.end());
   int out_pipe[2], err_pipe[2];
-  if (pipe(out_pipe) != 0) throw std::runtime_error("cannot create pipes");
-  if (pipe(err_pipe) != 0) {
+  if (pipe2(out_pipe, O_CLOEXEC) != 0) throw std::runtime_error("cannot create pipes");
+  if (pipe2(err_pipe, O_CLOEXEC) != 0) {
     close(out_pipe[0]);
     close(out_pipe[1]);
     throw std::runtime_error("cannot create pipes");
   }
   ChildOutput result;
   const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
+  const pid_t pid = spawn_child(argv, out_pipe[1], err_pipe[1]);
   if (pid < 0) throw std::runtime_error("cannot start a child process");
-  if (pid == 0) {
-    dup2(out_pipe[1], STDOUT_FILENO);
-    dup2(err_pipe[1], STDERR_FILENO);
-    close(out_pipe[0]);
-    close(err_pipe[0]);
-    close(out_pipe[1]);
-    close(err_pipe[1]);
-    setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
-    execv(exe.c_str(), argv.data());
-    const std::string message = "cannot execute " + exe + ": " + std::strerror(errno) + "\n";
-    if (write(STDERR_FILENO, message.data(), message.size()) < 0) {
-    }
-    _exit(127);
-  }
   close(out_pipe[1]);
   close(err_pipe[1]);
   drain(out_pipe[0], err_pipe[0], result);

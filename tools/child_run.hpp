@@ -21,6 +21,12 @@ struct ChildOutput {
 // The path of the running t800sim executable.
 std::string self_executable();
 
+// Starts the program argv[0] (a path, not searched in PATH) with stdin from /dev/null, stdout and stderr
+// onto the given descriptors and SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1. The child dies with this process
+// (PR_SET_PDEATHSIG): a sweep killed by SIGKILL, which it cannot catch, takes its running points with
+// it. Returns the child's pid, or -1 with errno set.
+int spawn_child(const std::vector<std::string>& argv, int out_fd, int err_fd);
+
 // Runs `exe` with `args` (no shell involved, SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1) and captures
 // stdout and stderr, its wall time and peak memory.
 ChildOutput run_program(const std::string& exe, const std::vector<std::string>& args);

@@ -7,6 +7,7 @@
 #include "network/toml_util.hpp"
 #include "tools/paper_data.hpp"
 #include "workloads/params.hpp"
+#include "workloads/registry.hpp"
 
 namespace tools {
 

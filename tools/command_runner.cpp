@@ -14,16 +14,16 @@ void run_command(const std::function<int()>& body) {
     std::cerr << e.what() << "\n";  // already "file:line:column: error: ..."
     code = kExitBadInput;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    std::cerr << network::bounded_message("error: " + std::string(e.what())) << "\n";
     code = kExitBadInput;
   } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    std::cerr << network::bounded_message("error: " + std::string(e.what())) << "\n";
     code = kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    std::cerr << network::bounded_message("error: " + std::string(e.what())) << "\n";
     code = kExitFailure;
   }
-  std::exit(code);
+  throw CommandExit{code};
 }
 
 }  // namespace tools

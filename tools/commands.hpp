@@ -21,10 +21,20 @@ void add_listing_command(CLI::App& app);  // generated T800 code of a scene's ke
 constexpr int kExitOk = 0;
 constexpr int kExitFailure = 1;     // the simulated program did not finish (deadlock) or a check failed
 constexpr int kExitBadInput = 2;    // a configuration or command-line error
+constexpr int kExitBadResult = 3;   // the run ended but its results are not results (a failed solve,
+                                    // a NaN or infinity: workloads::RunReport::failure)
+constexpr int kExitLimit = 4;       // --max-sim-time or --max-wall-time stopped the run
 
-// Runs a command's body and exits with the code it returns. Errors become one message on stderr: a
-// configuration error (file:line:column), a bad argument or an unusable path exits kExitBadInput; any other
-// failure exits kExitFailure. The one place commands turn exceptions into exit codes.
+// Thrown by run_command with the exit code; main() catches it and returns the code, so that every object
+// (the CLI::App, the simulation) is destroyed on the way out, as std::exit would not.
+struct CommandExit {
+  int code;
+};
+
+// Runs a command's body and ends the command with the code it returns (throws CommandExit). Errors
+// become one message on stderr: a configuration error (file:line:column), a bad argument or an unusable
+// path exits kExitBadInput; any other failure exits kExitFailure. The one place commands turn exceptions
+// into exit codes.
 [[noreturn]] void run_command(const std::function<int()>& body);
 
 }  // namespace tools

@@ -34,6 +34,8 @@ int sc_main(int argc, char* argv[]) {
     }
     const int code = app.exit(e);
     return code == 0 ? tools::kExitOk : tools::kExitBadInput;
+  } catch (const tools::CommandExit& e) {
+    return e.code;
   }
   return tools::kExitOk;
 }

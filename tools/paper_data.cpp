@@ -1,7 +1,10 @@
 #include "tools/paper_data.hpp"
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include <toml++/toml.h>
 
@@ -21,16 +24,28 @@ const toml::table& section(const toml::table& root, const std::string& name, con
   return *t;
 }
 
+// A finite number; for T = int also whole and within int's range (a count: workers, m).
+template <class T>
+T number(const toml::node& n, const std::string& file) {
+  const auto v = n.value<double>();
+  if (!v || !n.is_number())
+    throw ConfigError(network::pos_of(n.source(), file), "expected a number, got " + network::type_name(n));
+  if (!std::isfinite(*v)) throw ConfigError(network::pos_of(n.source(), file), "expected a finite number");
+  if constexpr (std::is_same_v<T, int>) {
+    if (*v != std::floor(*v) || *v < 0 || *v > std::numeric_limits<int>::max())  // found by fuzzing
+      throw ConfigError(network::pos_of(n.source(), file),
+                        "expected a whole number from 0 to " + std::to_string(std::numeric_limits<int>::max()));
+    return static_cast<int>(*v);
+  }
+  return T(*v);
+}
+
 template <class T>
 std::vector<T> numbers(const toml::table& t, const std::string& key, const std::string& file) {
   const toml::array* a = t[key].as_array();
   if (!a) throw ConfigError({file, 0, 0}, "'" + key + "' should be an array of numbers");
   std::vector<T> out;
-  for (const toml::node& n : *a) {
-    auto v = n.value<double>();
-    if (!v) throw ConfigError(network::pos_of(n.source(), file), "expected a number, got " + network::type_name(n));
-    out.push_back(T(*v));
-  }
+  for (const toml::node& n : *a) out.push_back(number<T>(n, file));
   return out;
 }
 
@@ -49,9 +64,13 @@ PaperTables load_paper_tables(const std::string& path) {
   const toml::array* rows = t5["utilisation_pct"].as_array();
   if (!rows) throw ConfigError({path, 0, 0}, "[table5] needs utilisation_pct");
   for (const toml::node& row : *rows) {
+    const toml::array* a = row.as_array();
+    if (!a)
+      throw ConfigError(network::pos_of(row.source(), path),
+                        "[table5] utilisation_pct: expected an array of numbers per row, got " +
+                            network::type_name(row));
     std::vector<double> r;
-    if (const toml::array* a = row.as_array())
-      for (const toml::node& n : *a) r.push_back(n.value_or(0.0));
+    for (const toml::node& n : *a) r.push_back(number<double>(n, path));
     p.table5_utilisation_pct.push_back(r);
   }
   const toml::table& t6 = section(root, "table6", path);

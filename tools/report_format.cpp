@@ -32,12 +32,20 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
     if (l.bytes > 0 || l.busy_us > 0)
       out += fmt::format("{:<44} {:>10} {:>9} {:>12.3f} {:>8.1f}\n", l.name, l.bytes, l.messages,
                          l.busy_us, 100.0 * l.utilisation);
-  if (!r.blocked.empty()) {
+  if (r.limit != network::Limit::none) {
+    out += fmt::format("\nSTOPPED by the {} limit before the run ended: no workload results\n",
+                       r.limit == network::Limit::sim_time ? "simulated-time" : "wall-time");
+  } else if (!r.blocked.empty()) {
     out += "\nDEADLOCK: the simulation ran out of events with processes still blocked:\n";
     for (const auto& b : r.blocked)
-      out += fmt::format("  {} on {}: {}\n", b.process, b.processor, b.status);
+      out += fmt::format("  {} on {}: {}, waiting for {}\n", b.process, b.processor, b.status, b.waits_for);
+    if (!r.wait_cycle.empty()) {
+      out += "the cycle of waits:\n";
+      for (const std::string& step : r.wait_cycle) out += "  " + step + "\n";
+    }
   } else {
     out += "\nworkload\n" + r.workload.to_text(2);
+    if (!r.failure.empty()) out += "\nFAILED: " + r.failure + "\n";
   }
   return out;
 }

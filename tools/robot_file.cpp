@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "network/config_error.hpp"
+#include "network/toml_util.hpp"
 
 namespace tools {
 
@@ -219,22 +220,11 @@ dynamics::RobotModel parse_table(const Reader& reader, const toml::table& root) 
 }  // namespace
 
 dynamics::RobotModel parse_robot(const std::string& text, const std::string& file) {
-  const Reader reader(file);
-  toml::table root;
-  try {
-    root = toml::parse(text, file);
-  } catch (const toml::parse_error& error) {
-    reader.fail(error.source(), std::string(error.description()));
-  }
-  return parse_table(reader, root);
+  return parse_table(Reader(file), network::parse_toml_text(text, file));
 }
 
 dynamics::RobotModel load_robot(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(SourcePos{path, 0, 0}, "cannot open the robot file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_robot(text.str(), path);
+  return parse_table(Reader(path), network::parse_toml_file(path, "robot file"));
 }
 
 }  // namespace tools

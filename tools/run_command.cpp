@@ -1,3 +1,6 @@
+#include <unistd.h>
+
+#include <cmath>
 #include <iostream>
 
 #include <fmt/format.h>
@@ -9,10 +12,12 @@
 #include "network/config_error.hpp"
 #include "tools/commands.hpp"
 #include "tools/report_format.hpp"
+#include "tools/run_progress.hpp"
 #include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 #include "tools/trace_files.hpp"
 #include "workloads/params.hpp"
+#include "workloads/registry.hpp"
 #include "workloads/run/run.hpp"
 
 namespace tools {
@@ -25,18 +30,23 @@ std::string default_text(const workloads::ParamValue& v) {
     std::string operator()(std::int64_t i) const { return std::to_string(i); }
     std::string operator()(double d) const { return fmt::format("{}", d); }
     std::string operator()(const std::string& t) const { return "\"" + t + "\""; }
-    std::string operator()(const std::vector<double>& l) const { return fmt::format("[{}]", fmt::join(l, ", ")); }
+    std::string operator()(const std::vector<double>& l) const {
+      return fmt::format("[{}]", fmt::join(l, ", "));
+    }
   };
   return std::visit(Visitor{}, v);
 }
 
-// The workload kinds and their parameters, from the catalogue (the one list), for `run --help`.
+// The workload kinds and their parameters, from the registry (workloads/registry.hpp), for `run
+// --help`.
 std::string workload_help() {
-  std::string out = "\nWorkload kinds (workload.kind) and their parameters (workload.NAME = default):\n";
+  std::string out =
+      "\nWorkload kinds (workload.kind) and their parameters (workload.NAME = default):\n";
   for (const workloads::WorkloadInfo& w : workloads::workload_catalog()) {
     out += fmt::format("\n  {}: {}\n", w.kind, w.summary);
     for (const workloads::ParamSpec& p : w.params)
-      out += fmt::format("    {} = {}  ({}) {}\n", p.name, default_text(p.default_value), to_string(p.type), p.help);
+      out += fmt::format("    {} = {}  ({}) {}\n", p.name, default_text(p.default_value),
+                         to_string(p.type), p.help);
   }
   return out;
 }
@@ -46,15 +56,49 @@ struct RunArgs {
   std::vector<std::string> overrides;
   bool json = false;
   TraceFiles traces;
+  double max_sim_s = 0, max_wall_s = 0;
 };
 
+void check_limit(double seconds, const char* flag) {
+  if (!(seconds >= 0) || !std::isfinite(seconds))
+    throw std::invalid_argument(std::string(flag) + " " + fmt::format("{}", seconds) +
+                                ": give a number of seconds, 0 for no limit");
+}
+
+std::string limit_text(const RunArgs& args, const workloads::RunReport& report) {
+  return report.limit == network::Limit::sim_time
+             ? fmt::format("--max-sim-time {} s", args.max_sim_s)
+             : fmt::format("--max-wall-time {} s", args.max_wall_s);
+}
+
 int run_scene(const RunArgs& args) {
+  check_limit(args.max_sim_s, "--max-sim-time");
+  check_limit(args.max_wall_s, "--max-wall-time");
   const Scene scene = load_scene(args.scene, args.overrides);
+  workloads::RunInputs inputs = inputs_from(scene, args.traces.any());
   check_trace_files(args.traces);
-  const workloads::RunReport report = workloads::run(inputs_from(scene, args.traces.any()));
+  inputs.options.max_sim_s = args.max_sim_s;
+  inputs.options.max_wall_s = args.max_wall_s;
+  RunProgress progress(isatty(STDERR_FILENO));
+  inputs.options.progress = [&progress](std::int64_t done, std::int64_t total) {
+    progress.update(done, total);
+  };
+  const workloads::RunReport report = workloads::run(inputs);
+  progress.end();
   std::cout << (args.json ? format_json(report) : format_text(report)) << std::flush;
   write_traces(report, args.traces);  // also after a deadlock: the trace shows who waited for whom
-  return report.blocked.empty() ? kExitOk : kExitFailure;
+  if (!report.blocked.empty()) return kExitFailure;
+  if (report.limit != network::Limit::none) {
+    std::cerr << fmt::format("error: stopped by {} at simulated time {:.3f} us, before the run ended: "
+                             "no workload results\n",
+                             limit_text(args, report), report.simulated_us);
+    return kExitLimit;
+  }
+  if (!report.failure.empty()) {
+    std::cerr << "error: the run failed: " << report.failure << "\n";
+    return kExitBadResult;
+  }
+  return kExitOk;
 }
 
 }  // namespace
@@ -64,11 +108,18 @@ void add_run_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "Simulate one scene and print a report");
   cmd->footer(workload_help());
   cmd->add_option("scene", args->scene, "scene TOML file (configs/scenes/*.toml)")->required();
-  cmd->add_option("--set", args->overrides,
-                  "override a scene key, e.g. --set workload.bytes=4000 --set network.link_speed_mbps=10")
+  cmd->add_option(
+         "--set", args->overrides,
+         "override a scene key, e.g. --set workload.bytes=4000 --set network.link_speed_mbps=10")
       ->type_name("KEY=VALUE");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the text report");
   add_trace_options(*cmd, args->traces);
+  cmd->add_option("--max-sim-time", args->max_sim_s,
+                  "stop the run after this many seconds of simulated time (exit code 4; 0: no limit)")
+      ->type_name("SECONDS");
+  cmd->add_option("--max-wall-time", args->max_wall_s,
+                  "stop the run after this many seconds of host time (exit code 4; 0: no limit)")
+      ->type_name("SECONDS");
   cmd->callback([args] { run_command([&] { return run_scene(*args); }); });
 }
 

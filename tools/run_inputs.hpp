@@ -1,4 +1,6 @@
-// A validated scene -> the plain inputs of one simulation (workloads::RunInputs).
+// A validated scene -> the plain inputs of one simulation (workloads::RunInputs), checked as far as
+// anything can be checked before simulating, so that `t800sim check` saying ok means `run` does not
+// fail on its input.
 #pragma once
 
 #include "tools/scene.hpp"
@@ -6,7 +8,15 @@
 
 namespace tools {
 
-// keep_intervals: record per-interval state (only when a trace is written).
+// keep_intervals: record per-interval state (only when a trace is written). Loads the files the
+// workload names (the robot), builds the workload once without a network so that settings the
+// network rules out are reported at the scene line or flag that gave them, and checks that
+// workload.output_csv could be written. Throws network::ConfigError (or std::invalid_argument for
+// an error inside a named CSV file).
 workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals = false);
+
+// `t800sim check FILE`: a topology file, or a scene checked as `run` would (inputs_from). Returns
+// the one-line summary of tools::check_file.
+std::string check_input(const std::string& path);
 
 }  // namespace tools

@@ -11,8 +11,10 @@
 #include <set>
 
 #include "network/families.hpp"
+#include "network/toml_limits.hpp"
 #include "network/toml_util.hpp"
 #include "network/topology_file.hpp"
+#include "workloads/registry.hpp"
 
 namespace tools {
 
@@ -27,6 +29,19 @@ using network::plural;
 using network::pos_of;
 using network::SourcePos;
 using network::type_name;
+
+// "P0, P1, ..." (at most 16 names, then how many more).
+std::string processor_names(const network::Topology& topology) {
+  std::vector<std::string> names;
+  for (const network::ProcessorSpec& p : topology.processors) {
+    if (names.size() == 16) {
+      names.push_back("and " + std::to_string(topology.processors.size() - 16) + " more");
+      break;
+    }
+    names.push_back(p.name);
+  }
+  return join(names);
+}
 
 std::string article(const std::string& noun) {
   return std::string("aeiou").find(noun.front()) == std::string::npos ? "a " : "an ";
@@ -49,7 +64,7 @@ std::string toml_quoted(const std::string& text) {
   std::string quoted = "\"";
   for (char c : text) {
     if (c == '"' || c == '\\') quoted += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
       quoted += ' ';  // control characters cannot appear in a basic string
       continue;
     }
@@ -63,15 +78,23 @@ std::string toml_quoted(const std::string& text) {
 // TOML ("P1", "../x.toml") is taken as a bare string.
 toml::table parse_override(const std::string& key, const std::string& value,
                            const std::string& flag) {
+  const auto parse = [&](const std::string& document) {
+    network::check_toml_limits(document, flag, false);
+    return toml::parse(std::string_view(document), std::string_view(flag));
+  };
   const bool one_line = value.find_first_of("\r\n") == std::string::npos;
   if (one_line) {
     try {
-      return toml::parse(std::string_view(key + " = " + value), std::string_view(flag));
+      return parse(key + " = " + value);
     } catch (const toml::parse_error&) {
       // fall through: a bare string
     }
   }
-  return toml::parse(std::string_view(key + " = " + toml_quoted(value)), std::string_view(flag));
+  try {
+    return parse(key + " = " + toml_quoted(value));
+  } catch (const toml::parse_error& e) {  // not expected: the value is quoted, the key checked
+    throw ConfigError({flag, 0, 0}, std::string(e.description()));
+  }
 }
 
 // Applies one override and returns its key.
@@ -138,10 +161,11 @@ class SceneReader {
   t800::LinkConfig link_config(const toml::table* net, const network::Topology& topology) const;
   void apply_processor_keys(const toml::table& net, t800::ProcessorConfig& config) const;
   void apply_processor_keys(const toml::table& net, network::Topology& topology) const;
-  network::Topology topology(const toml::table* net) const;
+  network::Topology topology(const toml::table* net, SourcePos& origin) const;
   network::Topology generated(const toml::table& net, const toml::node& family) const;
   network::Topology from_file(const toml::node& path) const;
   void workload(Scene& scene) const;
+  void placement(Scene& scene) const;
   void calibration(Scene& scene) const;
   void calibration_values(const toml::table& t, Scene& scene) const;
   void fidelity(Scene& scene) const;
@@ -208,7 +232,8 @@ t800::LinkConfig SceneReader::link_config(const toml::table* network,
   return link;
 }
 
-network::Topology SceneReader::topology(const toml::table* net) const {
+// `origin` receives where the network was given (Scene::origins).
+network::Topology SceneReader::topology(const toml::table* net, SourcePos& origin) const {
   static const toml::table empty;
   const toml::table& n = net ? *net : empty;
   // Exactly one source of processors; naming the ones found makes a clash easy to fix.
@@ -227,6 +252,7 @@ network::Topology SceneReader::topology(const toml::table* net) const {
          "give only one of network.topology, network.family and [topology]; "
          "this scene has both " +
              given[0].first + " and " + given[1].first);
+  origin = pos(*given[0].second);
   const bool family = given[0].first == "network.family";
   if (const toml::node* node = n.get("workers"); node && !family)
     fail(*node,
@@ -347,7 +373,7 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
     case ParamType::real: {
       if (!value.is_number()) wrong_type(value);  // an integer is a fine real
       const double x = number(value);
-      if (std::isnan(x)) fail(value, key + " is nan: give a number");
+      if (!std::isfinite(x)) fail(value, key + " is " + number_text(x) + ": give a finite number");
       check_range(x);
       return x;
     }
@@ -360,13 +386,14 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
         if (!ok)
           fail(value, key + " = \"" + s + "\" is not valid; choose one of " + join(spec.choices));
       }
-      // Processor-naming parameters must name a processor of this scene's network.
-      if ((spec.name == "from" || spec.name == "to") && !s.empty() && topology.find(s) < 0) {
-        std::vector<std::string> names;
-        for (const network::ProcessorSpec& p : topology.processors) names.push_back(p.name);
+      return s;
+    }
+    case ParamType::processor: {
+      if (!value.is_string()) wrong_type(value);
+      const std::string s = *value.value<std::string>();
+      if (!s.empty() && topology.find(s) < 0)
         fail(value, key + " = \"" + s + "\": there is no processor '" + s +
-                        "' in the topology; processors are " + join(names));
-      }
+                        "' in the topology; processors are " + processor_names(topology));
       return s;
     }
     case ParamType::real_list: {
@@ -377,7 +404,8 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
           fail(element, "'" + key + "': expected an array of numbers, got an element of type " +
                             type_name(element));
         list.push_back(number(element));
-        if (std::isnan(list.back())) fail(element, key + " contains nan: give numbers");
+        if (!std::isfinite(list.back()))
+          fail(element, key + " contains " + number_text(list.back()) + ": give finite numbers");
         check_range(list.back());
       }
       return list;
@@ -402,8 +430,10 @@ void SceneReader::workload(Scene& scene) const {
   std::vector<std::string> valid{"kind"};
   for (const workloads::ParamSpec& p : info->params) valid.push_back(p.name);
   check_keys(t, valid, "[workload] of kind " + info->kind);
+  scene.origins["workload"] = pos(t);
   for (const workloads::ParamSpec& spec : info->params) {
     const toml::node* value = t.get(spec.name);
+    if (value) scene.origins["workload." + spec.name] = pos(*value);
     scene.workload.set(spec.name, value ? param(spec, *value, scene.topology) : spec.default_value);
     if (!value) scene.workload_defaults.push_back(spec.name);
   }
@@ -509,10 +539,40 @@ void SceneReader::compiler(Scene& scene) const {
   scene.run_time_checks = boolean(t, "run_time_checks", scene.run_time_checks);
 }
 
+// [placement]: process = "P1", or group = ["P1", "P2", ...] (one per member) or "P1" (all), or
+// "group[2]" = "P3". Whether the processes exist is the program's to say when it is built; whether
+// the processors do is checked here.
+void SceneReader::placement(Scene& scene) const {
+  const toml::node* node = root_.get("placement");
+  if (!node) return;
+  const toml::table& t = table(*node, "placement");
+  for (auto&& [key, value] : t) {
+    workloads::PlacementEntry entry{std::string(key.str()), {}, pos(value)};
+    auto add = [&](const toml::node& name) {
+      if (!name.is_string())
+        fail(name, "'placement." + entry.process +
+                       "': expected a processor name or an array of them, got " + type_name(name));
+      const std::string processor = *name.value<std::string>();
+      if (scene.topology.find(processor) < 0)
+        fail(name, "placement." + entry.process + ": there is no processor '" + processor +
+                       "' in the topology; processors are " + processor_names(scene.topology));
+      entry.processors.push_back(processor);
+    };
+    if (const toml::array* list = value.as_array()) {
+      if (list->empty())
+        fail(value, "placement." + entry.process + " is empty: give at least one processor");
+      for (const toml::node& name : *list) add(name);
+    } else {
+      add(value);
+    }
+    scene.placement.push_back(std::move(entry));
+  }
+}
+
 Scene SceneReader::read() {
   check_keys(root_,
-             {"name", "description", "network", "topology", "workload", "calibration", "fidelity",
-              "compiler"},
+             {"name", "description", "network", "topology", "workload", "placement", "calibration",
+              "fidelity", "compiler"},
              "a scene");
   Scene scene;
   scene.file = file_;
@@ -525,9 +585,10 @@ Scene SceneReader::read() {
                {"topology", "family", "workers", "link_speed_mbps", "link_protocol", "processor",
                 "memory", "wait_states"},
                "[network]");
-  scene.topology = topology(net);
+  scene.topology = topology(net, scene.origins["network"]);
   scene.link = link_config(net, scene.topology);
   workload(scene);
+  placement(scene);
   calibration(scene);
   fidelity(scene);
   compiler(scene);
@@ -535,6 +596,15 @@ Scene SceneReader::read() {
 }
 
 }  // namespace
+
+SourcePos origin_of(const Scene& scene, const std::vector<std::string>& keys) {
+  for (const std::string& key : keys)
+    if (auto it = scene.origins.find(key); it != scene.origins.end()) return it->second;
+  for (const std::string& key : keys)
+    if (key.rfind("workload.", 0) == 0 && scene.origins.count("workload"))
+      return scene.origins.at("workload");
+  return {scene.file, 0, 0};
+}
 
 // An override that names the network's source (network.topology, network.family or [topology])
 // replaces the scene file's source, so a family scene can be run on a topology file and the other

@@ -10,6 +10,7 @@
 #include "network/topology.hpp"
 #include "t800/processor_config.hpp"
 #include "workloads/params.hpp"
+#include "workloads/placement.hpp"
 
 namespace tools {
 
@@ -22,6 +23,7 @@ struct Scene {
   std::string workload_kind;
   workloads::Params workload;  // validated against the workload's declared parameters
   std::vector<std::string> workload_defaults;  // the parameters the scene left at their defaults
+  workloads::Placement placement;              // [placement]: where the program's processes run
   // [calibration]: the occam code-efficiency factor (t800::CostModel) and how it was fitted. 1 =
   // uncalibrated.
   double code_efficiency = 1.0;
@@ -30,7 +32,15 @@ struct Scene {
   network::Fidelity fidelity;
   // [compiler] run_time_checks: occam's run-time checks compiled in (the compiler's default).
   bool run_time_checks = true;
+  // Where settings were written, for errors found after reading (workloads::SettingError): each
+  // workload parameter given ("workload.NAME"), the [workload] table ("workload") and what gave
+  // the network ("network"); a file position, or the --set flag that gave it.
+  std::map<std::string, network::SourcePos> origins;
 };
+
+// Where `keys` (most specific first) were written: the first one given, else the [workload] table
+// for a workload key, else the scene file.
+network::SourcePos origin_of(const Scene& scene, const std::vector<std::string>& keys);
 
 // Loads a scene file. Each override is "key=value" with a dotted key ("workload.bytes=4000"); the
 // value is read as a TOML value (4000, 2.5, "text", true, [1,2]) and, if that fails, as a bare

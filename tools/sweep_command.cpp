@@ -207,7 +207,19 @@ int run_sweep(const SweepArgs& a, const Sweep& s) {
     fresh[point_id(r.params)] = r;
   };
   const auto start = std::chrono::steady_clock::now();
-  run_children(commands, pool);
+  try {
+    run_children(commands, pool);
+  } catch (const Interrupted& e) {
+    // The points that finished are in the file; the running ones were ended and will run again
+    // when the same sweep is rerun.
+    progress.end();
+    append.close();
+    write_file("-o", a.output, results_csv(final_table(s, earlier, fresh)));
+    std::cerr << fmt::format("sweep: {}; {} of {} points finished, in {}; rerun with the same -o to run "
+                             "the others\n",
+                             e.what(), fresh.size(), todo.size(), a.output);
+    return 128 + e.signal;
+  }
   progress.end();
   append.close();
   const ResultsTable table = final_table(s, earlier, fresh);

@@ -3,16 +3,17 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
+#include <csignal>
 #include <chrono>
 #include <cstring>
 #include <list>
 
-extern char** environ;
+#include "tools/child_run.hpp"
 
 namespace tools {
 
@@ -69,16 +70,8 @@ Child start(std::size_t index, const std::vector<std::string>& argv) {
     c.exited = true;
     return c;
   }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, out[1], 1);
-  posix_spawn_file_actions_adddup2(&actions, err[1], 2);
-  std::vector<char*> args;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  const int failed = posix_spawn(&c.pid, args[0], &actions, nullptr, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
+  c.pid = spawn_child(argv, out[1], err[1]);
+  const int failed = c.pid < 0 ? errno : 0;
   close(out[1]);
   close(err[1]);
   c.fd[0] = out[0];
@@ -136,19 +129,65 @@ bool finished(Child& c) {
   return true;
 }
 
+volatile std::sig_atomic_t g_signal = 0;
+
+void note_signal(int signal) { g_signal = signal; }
+
+// While children run, SIGINT, SIGTERM and SIGHUP are noted instead of ending this process at once, so
+// that it can end its children first.
+class SignalsNoted {
+ public:
+  SignalsNoted() {
+    g_signal = 0;
+    struct sigaction action {};
+    action.sa_handler = note_signal;
+    sigemptyset(&action.sa_mask);
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &action, &old_[i]);
+  }
+  ~SignalsNoted() {
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &old_[i], nullptr);
+  }
+
+ private:
+  static constexpr std::array<int, 3> kSignals = {SIGINT, SIGTERM, SIGHUP};
+  std::array<struct sigaction, 3> old_{};
+};
+
+void end_children(std::list<Child>& running) {
+  for (Child& c : running)
+    if (!c.exited && c.pid > 0) kill(c.pid, SIGKILL);
+  for (Child& c : running) {
+    if (!c.exited && c.pid > 0)
+      while (waitpid(c.pid, nullptr, 0) < 0 && errno == EINTR) {
+      }
+    for (int w = 0; w < 2; ++w)
+      if (c.fd[w] >= 0) close(c.fd[w]);
+  }
+  running.clear();
+}
+
 }  // namespace
+
+Interrupted::Interrupted(int signal)
+    : std::runtime_error(std::string("interrupted by ") + strsignal(signal)), signal(signal) {}
 
 void run_children(const std::vector<std::vector<std::string>>& commands, const ChildPool& pool) {
   const std::size_t parallel = std::size_t(std::max(1, pool.parallel));
   std::list<Child> running;
   std::size_t next = 0;
   auto last_tick = Clock::now();
+  const SignalsNoted signals;
   while (next < commands.size() || !running.empty()) {
+    if (g_signal) {
+      end_children(running);
+      throw Interrupted(g_signal);
+    }
     while (running.size() < parallel && next < commands.size())
       running.push_back(start(next, commands[next])), ++next;
     collect_output(running);
     for (auto it = running.begin(); it != running.end();) {
       check_exit(*it, pool.timeout_s);
+      if (g_signal) break;  // a child ended by the same signal is not a result
       if (!finished(*it)) {
         ++it;
         continue;

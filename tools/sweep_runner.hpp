@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,16 @@ struct ChildPool {
   std::function<void()> tick;
 };
 
+// Thrown by run_children when SIGINT, SIGTERM or SIGHUP arrived while it ran: the running children
+// were killed and reaped first (and `done` was not called for them), so nothing outlives the sweep.
+struct Interrupted : std::runtime_error {
+  explicit Interrupted(int signal);
+  int signal;
+};
+
 // Runs every command (argv[0] is a path, not searched in PATH), stdin from /dev/null; returns when
 // all have ended. A command that cannot be started ends with exit code 127 and the reason in `err`.
+// Children die with this process, even by SIGKILL (spawn_child); throws Interrupted.
 void run_children(const std::vector<std::vector<std::string>>& commands, const ChildPool& pool);
 
 }  // namespace tools

@@ -1,12 +1,17 @@
 // `t800sim vcd TRACE.csv -o TRACE.vcd`: a CSV trace as VCD, through SystemC's sc_trace
 // (trace_vcd.hpp). `t800sim run --trace-vcd` uses it in a child process; it is also handy on its
 // own.
+#include <unistd.h>
+
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 
 #include "tools/commands.hpp"
 #include "tools/trace_format.hpp"
 #include "tools/trace_vcd.hpp"
+#include "workloads/run/output_file.hpp"
 
 namespace tools {
 
@@ -15,12 +20,20 @@ struct VcdArgs {
   std::string csv, output;
 };
 
+// SystemC writes the VCD itself and reports neither an unwritable file (only a warning) nor a write
+// error; so it writes a temporary file, which then replaces the output whole through
+// workloads::OutputFile, which does report them.
 int convert(const VcdArgs& a) {
   const std::vector<TraceRow> rows = read_trace_csv(a.csv);
-  // SystemC reports an unwritable trace file only as a warning; find out first.
-  if (!std::ofstream(a.output, std::ios::app))
-    throw std::invalid_argument("-o " + a.output + ": cannot write it");
-  write_vcd(rows, a.output);
+  workloads::check_output_path(a.output, "-o");
+  const std::filesystem::path temporary =
+      std::filesystem::temp_directory_path() / ("t800sim-" + std::to_string(getpid()) + ".vcd");
+  write_vcd(rows, temporary.string());
+  std::ifstream in(temporary, std::ios::binary);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  in.close();
+  std::filesystem::remove(temporary);
+  workloads::write_output_file(a.output, text, "-o");
   return kExitOk;
 }
 }  // namespace

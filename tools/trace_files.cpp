@@ -3,10 +3,10 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "tools/child_run.hpp"
 #include "tools/trace_format.hpp"
+#include "workloads/run/output_file.hpp"
 
 namespace tools {
 
@@ -14,29 +14,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void write_text(const std::string& path, const std::string& text, const char* flag) {
-  std::ofstream out(path, std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) throw std::invalid_argument(std::string(flag) + " " + path + ": cannot write it");
-}
-
-void check_writable(const std::string& path, const char* flag) {
-  if (path.empty()) return;
-  const bool existed = fs::exists(path);
-  std::ofstream probe(path, std::ios::app);
-  if (!probe) throw std::invalid_argument(std::string(flag) + " " + path + ": cannot write it");
-  probe.close();
-  if (!existed) fs::remove(path);
-}
-
 void write_vcd_through_child(const std::string& csv_text, const std::string& csv_given,
                              const std::string& vcd) {
   std::string csv = csv_given;
   if (csv.empty()) {
     csv = (fs::temp_directory_path() / ("t800sim-trace-" + std::to_string(getpid()) + ".csv"))
               .string();
-    write_text(csv, csv_text, "--trace-vcd (temporary CSV)");
+    workloads::write_output_file(csv, csv_text, "--trace-vcd (temporary CSV)");
   }
   const ChildOutput child = run_self({"vcd", csv, "-o", vcd});
   if (csv_given.empty()) fs::remove(csv);
@@ -61,17 +45,18 @@ void add_trace_options(CLI::App& cmd, TraceFiles& files) {
 }
 
 void check_trace_files(const TraceFiles& files) {
-  check_writable(files.vcd, "--trace-vcd");
-  check_writable(files.json, "--trace-json");
-  check_writable(files.csv, "--trace-csv");
+  workloads::check_output_path(files.vcd, "--trace-vcd");
+  workloads::check_output_path(files.json, "--trace-json");
+  workloads::check_output_path(files.csv, "--trace-csv");
 }
 
 void write_traces(const workloads::RunReport& report, const TraceFiles& files) {
   if (!files.any()) return;
   const std::vector<TraceRow> rows = trace_rows(report);
   const std::string csv = trace_csv(rows);
-  if (!files.csv.empty()) write_text(files.csv, csv, "--trace-csv");
-  if (!files.json.empty()) write_text(files.json, trace_chrome_json(rows), "--trace-json");
+  if (!files.csv.empty()) workloads::write_output_file(files.csv, csv, "--trace-csv");
+  if (!files.json.empty())
+    workloads::write_output_file(files.json, trace_chrome_json(rows), "--trace-json");
   if (!files.vcd.empty()) write_vcd_through_child(csv, files.csv, files.vcd);
 }
 

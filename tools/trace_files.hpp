@@ -22,8 +22,8 @@ void add_trace_options(CLI::App& cmd, TraceFiles& files);
 // run, so a typo in a path does not cost a simulation).
 void check_trace_files(const TraceFiles& files);
 
-// Writes the asked-for traces of a finished run; the VCD through a `t800sim vcd` child
-// (trace_vcd.hpp says why). Throws std::invalid_argument.
+// Writes the asked-for traces of a finished run, each whole or not at all (workloads::OutputFile);
+// the VCD through a `t800sim vcd` child (trace_vcd.hpp says why). Throws std::runtime_error.
 void write_traces(const workloads::RunReport& report, const TraceFiles& files);
 
 }  // namespace tools

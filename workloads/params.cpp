@@ -17,7 +17,9 @@ const ParamValue& Params::at(const std::string& name) const {
   return it->second;
 }
 
-bool Params::flag(const std::string& name) const { return std::get<bool>(at(name)); }
+bool Params::flag(const std::string& name) const {
+  return std::get<bool>(at(name));
+}
 
 std::int64_t Params::integer(const std::string& name) const {
   return std::get<std::int64_t>(at(name));
@@ -37,19 +39,20 @@ const std::vector<double>& Params::real_list(const std::string& name) const {
   return std::get<std::vector<double>>(at(name));
 }
 
-const WorkloadInfo* find_workload(const std::string& kind) {
-  for (const WorkloadInfo& w : workload_catalog())
-    if (w.kind == kind) return &w;
-  return nullptr;
-}
-
 const char* to_string(ParamType type) {
   switch (type) {
-    case ParamType::flag: return "boolean";
-    case ParamType::integer: return "integer";
-    case ParamType::real: return "number";
-    case ParamType::text: return "string";
-    case ParamType::real_list: return "array of numbers";
+    case ParamType::flag:
+      return "boolean";
+    case ParamType::integer:
+      return "integer";
+    case ParamType::real:
+      return "number";
+    case ParamType::text:
+      return "string";
+    case ParamType::real_list:
+      return "array of numbers";
+    case ParamType::processor:
+      return "processor name";
   }
   return "?";
 }

@@ -1,5 +1,6 @@
-// Parameters a workload declares (name, type, default, range, help). The scene loader validates a scene's
-// [workload] table against these declarations; workloads read typed values back. No TOML here.
+// Parameters a workload declares (name, type, default, range, help). The scene loader validates a
+// scene's [workload] table against these declarations; workloads read typed values back. No TOML
+// here.
 #pragma once
 
 #include <cstdint>
@@ -13,7 +14,9 @@ namespace workloads {
 
 using ParamValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>>;
 
-enum class ParamType { flag, integer, real, text, real_list };
+// processor: the name of one of the network's processors (checked against the topology), or empty
+// for the workload's own choice.
+enum class ParamType { flag, integer, real, text, real_list, processor };
 
 struct ParamSpec {
   std::string name;
@@ -38,8 +41,8 @@ class Params {
   bool has(const std::string& name) const { return values_.count(name) != 0; }
   bool flag(const std::string& name) const;
   std::int64_t integer(const std::string& name) const;
-  double real(const std::string& name) const;  // accepts an integer value too
-  const std::string& text(const std::string& name) const;
+  double real(const std::string& name) const;              // accepts an integer value too
+  const std::string& text(const std::string& name) const;  // text and processor values
   const std::vector<double>& real_list(const std::string& name) const;
   const std::map<std::string, ParamValue>& values() const { return values_; }
 
@@ -47,10 +50,6 @@ class Params {
   const ParamValue& at(const std::string& name) const;
   std::map<std::string, ParamValue> values_;
 };
-
-// Every workload kind the simulator knows, with its parameters (workloads/catalog.cpp).
-const std::vector<WorkloadInfo>& workload_catalog();
-const WorkloadInfo* find_workload(const std::string& kind);
 
 // Human-readable type name ("integer", "real", ...), for error messages and help.
 const char* to_string(ParamType type);

@@ -325,8 +325,7 @@ void ExpressionEmitter::leaf_address(int n) {
     return;
   }
   // A REAL constant: the constant table's pointer (set up once by the PROC), then its word.
-  auto [it, added] = constants_.insert({node.value, int(constants_.size())});
-  (void)added;
+  const auto it = constants_.insert({node.value, int(constants_.size())}).first;
   const int words = real64_ ? 2 : 1;
   sink_.emit(
       {Op::ldl, frame_.constant_table(), 0, false, {Region::workspace, -1}, "constant table"});

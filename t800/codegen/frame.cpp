@@ -24,10 +24,12 @@ int Frame::allocate_temporary(int words) {
   for (;; ++slot) {  // the first run of `words` free words
     bool free = true;
     for (int w = 0; w < words && free; ++w)
-      free = slot + std::size_t(w) >= temporary_used_.size() || !temporary_used_[slot + std::size_t(w)];
+      free = slot + std::size_t(w) >= temporary_used_.size() ||
+             !temporary_used_[slot + std::size_t(w)];
     if (free) break;
   }
-  if (temporary_used_.size() < slot + std::size_t(words)) temporary_used_.resize(slot + std::size_t(words), false);
+  if (temporary_used_.size() < slot + std::size_t(words))
+    temporary_used_.resize(slot + std::size_t(words), false);
   for (int w = 0; w < words; ++w) temporary_used_[slot + std::size_t(w)] = true;
   return fixed_ + int(slot);
 }

@@ -26,11 +26,17 @@ bool is_routine(NodeKind kind) {
 Recording::Recording(std::string name, bool real64)
     : name_(std::move(name)), real64_(real64), serial_(next_serial()) {}
 
-Recording* Recording::current() { return active(); }
+Recording* Recording::current() {
+  return active();
+}
 
-RecordingScope::RecordingScope(Recording& recording) : outer_(active()) { active() = &recording; }
+RecordingScope::RecordingScope(Recording& recording) : outer_(active()) {
+  active() = &recording;
+}
 
-RecordingScope::~RecordingScope() { active() = outer_; }
+RecordingScope::~RecordingScope() {
+  active() = outer_;
+}
 
 int Recording::declare_array(std::string name, std::int64_t length, ArrayStorage storage) {
   arrays_.push_back({std::move(name), length, storage});

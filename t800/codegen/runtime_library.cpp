@@ -202,7 +202,6 @@ CodeUnit software_arithmetic(NodeKind kind, bool real64) {
   c.with(Op::ajw, -frame, "enter");
   c.ldl(frame + 2, "op").with(Op::eqc, 0).cj(kind != NodeKind::add, "dispatch");
   c.ldl(frame + 2, "op").with(Op::eqc, 2).cj(kind != NodeKind::mul, "dispatch");
-  const int words = real64 ? 2 : 1;
   // Unpack both operands: fraction, exponent, type.
   for (int operand = 0; operand < 2; ++operand) {
     const int at = 1 + 3 * operand;
@@ -274,7 +273,6 @@ CodeUnit software_arithmetic(NodeKind kind, bool real64) {
   }
   c.op(Op::cflerr, "check the result");
   c.with(Op::ajw, frame, "leave").op(Op::ret);
-  (void)words;
   return unit(name, real64, c.take(), 0, frame + 4);
 }
 
@@ -314,7 +312,11 @@ CodeUnit software_other(NodeKind kind, bool real64) {
       // addition, whose code is theirs (only their execution is SQRT's).
       Code step(false);
       for (const CodeUnit* u : {&div, &add})
-        step.ldl(0).with(Op::ldc, 0).ldl(frame + 1).with(Op::call, 1024, u->name, kWorkspace).stl(0);
+        step.ldl(0)
+            .with(Op::ldc, 0)
+            .ldl(frame + 1)
+            .with(Op::call, 1024, u->name, kWorkspace)
+            .stl(0);
       step.ldl(0).with(Op::ldc, 1).op(Op::shr, "/ 2", {}, 1).stl(0);  // exponent - 1
       c.with(Op::ajw, frame, "leave").op(Op::ret);
       CodeUnit u = unit(name, real64, c.take(), 0, frame + 4 + div.workspace_words);

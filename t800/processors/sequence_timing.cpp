@@ -78,12 +78,11 @@ class Fetcher {
  public:
   Fetcher(bool external, Bus& bus) : external_(external), bus_(bus) {}
 
-  // The instruction occupying bytes [begin, end) may start at `at`; returns when its code is in.
-  std::int64_t ready(std::int64_t begin, std::int64_t end, std::int64_t at) {
+  // The instruction whose last byte is at `end - 1` may start at `at`; returns when its code is in.
+  std::int64_t ready(std::int64_t end, std::int64_t at) {
     if (!external_) return at;
     const std::int64_t last = (end - 1) / 4;
     while (std::int64_t(ready_.size()) <= last) ready_.push_back(bus_.access(at, 1));
-    (void)begin;
     return std::max(at, ready_[std::size_t(last)]);
   }
   // The instruction starting a new word began at `at`: the word after it may now be fetched.
@@ -141,7 +140,7 @@ SequenceTime time_sequence(const isa::Sequence& code, const ProcessorModel& proc
     // The instruction proper starts once its prefixes ran, its code is in, and (FPU instructions)
     // the FPU is free.
     const std::int64_t issue = iu + prefix;
-    const std::int64_t code_ready = fetcher.ready(position, position + bytes, issue);
+    const std::int64_t code_ready = fetcher.ready(position + bytes, issue);
     const std::int64_t start = std::max(code_ready, uses_fpu ? fpu : 0);
     fetcher.started(position, start);
 

@@ -1,10 +1,19 @@
 // Runs the built t800sim executable and captures what it prints, for end-to-end tests.
 #pragma once
 
-#include <array>
-#include <cstdio>
-#include <string>
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
 
 namespace cli_test {
 
@@ -24,6 +33,54 @@ inline Output run(const std::string& args) {
   const int status = pclose(pipe);
   o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return o;
+}
+
+// Starts `t800sim ARGS...` in the background (from the source directory, output to /dev/null) and
+// returns its pid, for tests that kill a run.
+inline pid_t start(const std::vector<std::string>& args) {
+  const pid_t pid = fork();
+  if (pid != 0) return pid;
+  if (chdir(T800SIM_SOURCE_DIR) != 0) _exit(127);
+  const int null = open("/dev/null", O_RDWR);
+  dup2(null, 0);
+  dup2(null, 1);
+  dup2(null, 2);
+  setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+  std::vector<std::string> argv{std::string(T800SIM_BINARY_DIR) + "/t800sim"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::vector<char*> c_argv;
+  for (std::string& a : argv) c_argv.push_back(a.data());
+  c_argv.push_back(nullptr);
+  execv(c_argv[0], c_argv.data());
+  _exit(127);
+}
+
+// The pids of a process's children (Linux /proc).
+inline std::vector<pid_t> children_of(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children");
+  std::vector<pid_t> out;
+  for (pid_t child; in >> child;) out.push_back(child);
+  return out;
+}
+
+// Whether a process is gone (or a zombie nobody has reaped yet: it runs no more).
+inline bool ended(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(in, line)) return true;
+  const auto paren = line.rfind(')');
+  return paren == std::string::npos || line.substr(paren + 2, 1) == "Z";
+}
+
+// Waits up to `seconds` for `done()`; returns its last value.
+template <class F>
+bool wait_until(F&& done, double seconds) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (!done()) {
+    if (std::chrono::steady_clock::now() > end) return false;
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  return true;
 }
 
 // The number after "key": in a JSON text (first occurrence), or NaN.

@@ -9,6 +9,7 @@
 
 #include "cli_fixtures.hpp"
 #include "workloads/params.hpp"
+#include "workloads/registry.hpp"
 
 using cli_test::run;
 

@@ -14,6 +14,10 @@ inline network::Topology chain(int workers) {
   return network::generate(network::Family::chain, workers, {}, {"test", 0, 0});
 }
 
+inline network::Topology tree(int workers) {
+  return network::generate(network::Family::tree, workers, {}, {"test", 0, 0});
+}
+
 inline network::MachineOptions options(double mbps, t800::LinkProtocol protocol = t800::LinkProtocol::overlapped) {
   network::MachineOptions o;
   o.link.speed_mbps = mbps;

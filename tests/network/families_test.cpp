@@ -229,10 +229,39 @@ TEST(Families, TooFewWorkers) {
 }
 
 TEST(Families, HypercubeSizes) {
-  for (int workers : {2, 4, 5, 6, 8, 15})
+  for (int workers : {2, 4, 5, 6, 8, 14, 1000})
     EXPECT_TRUE(fails_at([&] { make(Family::hypercube, workers); }, "scene.toml", 7, 11,
                          {"hypercube of " + std::to_string(workers) + " workers is not possible",
-                          "workers = 1, 3 or 7"}));
+                          "workers = 1, 3, 7, 15, ..., 1023"}));
+}
+
+// Beyond 8 processors a cube node is a chain of c transputers sharing its d dimensions two each
+// (2^d c = n + 1, the smallest c with 2c >= d): the links are the chains' and d 2^(d-1) for the cube,
+// and transputers j of two cube nodes are as many hops apart as their cube nodes differ in bits.
+TEST(Families, LargeHypercubesAreCubesOfChains) {
+  struct Shape {
+    int workers, dimensions, chain;
+  };
+  for (const Shape& s : {Shape{15, 3, 2}, Shape{63, 4, 4}, Shape{1023, 8, 4}}) {
+    const Topology t = make(Family::hypercube, s.workers);
+    const int cube_nodes = 1 << s.dimensions;
+    EXPECT_EQ(int(t.connections.size()),
+              cube_nodes * (s.chain - 1) + s.dimensions * cube_nodes / 2)
+        << s.workers;
+    const int step = std::max(1, cube_nodes / 7);  // some 50 pairs of cube nodes
+    for (int v = 0; v < cube_nodes; v += step)
+      for (int w = 1; w < cube_nodes; w += step + 1)
+        for (int j = 0; j < s.chain; ++j) {
+          // Along the chain to the transputer of each dimension that differs, across, and back.
+          int hops = 0, at = j;
+          for (int k = 0; k < s.dimensions; ++k)
+            if ((v ^ w) & (1 << k)) hops += std::abs(at - k / 2) + 1, at = k / 2;
+          hops += std::abs(at - j);
+          EXPECT_LE(path_length(t, v * s.chain + j, w * s.chain + j), hops) << s.workers;
+          EXPECT_GE(path_length(t, v * s.chain + j, w * s.chain + j),
+                    __builtin_popcount(static_cast<unsigned>(v ^ w)));
+        }
+  }
 }
 
 TEST(Families, TooManyWorkers) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "test_util.hpp"
+#include "workloads/registry.hpp"
 
 namespace {
 
@@ -136,9 +137,10 @@ TEST(Scene, FamilyKeysNeedAFamily) {
 
 // network.processor and network.memory set every processor of a topology file too.
 TEST(Scene, ProcessorKeysOverrideATopologyFile) {
-  const std::string path = write_file("override.toml", "[network]\ntopology = \"" + pair_path() +
-                                       "\"\nprocessor = \"T805-30\"\nmemory = \"external\"\n"
-                                       "wait_states = 2\n[workload]\nkind = \"pingpong\"\n");
+  const std::string path =
+      write_file("override.toml", "[network]\ntopology = \"" + pair_path() +
+                                      "\"\nprocessor = \"T805-30\"\nmemory = \"external\"\n"
+                                      "wait_states = 2\n[workload]\nkind = \"pingpong\"\n");
   const tools::Scene s = tools::load_scene(path);
   for (const auto& p : s.topology.processors) {
     EXPECT_EQ(p.config.type, t800::ProcessorType::T805_30);
@@ -160,7 +162,7 @@ TEST(Scene, FamilyErrors) {
   EXPECT_TRUE(
       bad_scene("[network]\nfamily = \"hypercube\"\nworkers = 5\n[workload]\n"
                 "kind = \"pingpong\"\n",
-                3, 11, {"hypercube of 5 workers is not possible", "1, 3 or 7"}));
+                3, 11, {"hypercube of 5 workers is not possible", "1, 3, 7, 15"}));
   EXPECT_TRUE(
       bad_scene("[network]\nfamily = \"chain\"\nworkers = 99999999999\n[workload]\n"
                 "kind = \"pingpong\"\n",
@@ -202,12 +204,13 @@ TEST(Scene, UnknownKeysAnywhere) {
 
 TEST(Scene, WorkloadKind) {
   EXPECT_TRUE(bad_scene("[network]\nfamily = \"chain\"\nworkers = 1\n", 1, 1,
-                        {"no [workload] table", "pingpong, link-stream"}));
+                        {"no [workload] table", "link-stream, livermore7, pingpong"}));
   EXPECT_TRUE(bad_scene("[network]\nfamily = \"chain\"\nworkers = 1\n[workload]\nbytes = 3\n", 4, 1,
                         {"[workload] has no kind"}));
   std::string text = pingpong();
   text.replace(text.find("\"pingpong\""), 10, "\"pong\"");
-  EXPECT_TRUE(bad_scene(text, 7, 8, {"unknown workload kind 'pong'", "pingpong, link-stream"}));
+  EXPECT_TRUE(
+      bad_scene(text, 7, 8, {"unknown workload kind 'pong'", "link-stream, livermore7, pingpong"}));
   EXPECT_TRUE(bad_scene("workload = 5\n[network]\nfamily = \"chain\"\nworkers = 1\n", 1, 12,
                         {"'workload': expected a table, got integer"}));
 }
@@ -216,7 +219,7 @@ TEST(Scene, ParameterTypes) {
   EXPECT_TRUE(bad_scene(pingpong("bytes = 6.5\n"), 8, 9,
                         {"'workload.bytes': expected an integer, got floating-point number"}));
   EXPECT_TRUE(bad_scene(pingpong("bytes = \"64\"\n"), 8, 9, {"expected an integer, got string"}));
-  EXPECT_TRUE(bad_scene(pingpong("from = 1\n"), 8, 8, {"expected a string, got integer"}));
+  EXPECT_TRUE(bad_scene(pingpong("from = 1\n"), 8, 8, {"expected a processor name, got integer"}));
 }
 
 TEST(Scene, ParameterRangesAndChoices) {

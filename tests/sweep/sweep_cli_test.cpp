@@ -9,25 +9,12 @@ using cli_test::run;
 using sweep_test::fresh_dir;
 using sweep_test::lines;
 using sweep_test::read_file;
+using sweep_test::column;
+using sweep_test::table;
 
 namespace {
 
 const std::string kChain = "tests/sweep/chain-pingpong.toml";
-
-// The table as rows of fields (header first).
-std::vector<std::vector<std::string>> table(const std::string& path) {
-  std::vector<std::vector<std::string>> rows;
-  for (const std::string& line : lines(read_file(path)))
-    rows.push_back(tools::parse_csv_line(line));
-  return rows;
-}
-
-std::size_t column(const std::vector<std::vector<std::string>>& t, const std::string& name) {
-  for (std::size_t i = 0; i < t.at(0).size(); ++i)
-    if (t[0][i] == name) return i;
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
 
 }  // namespace
 

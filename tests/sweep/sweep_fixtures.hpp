@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../cli/cli_fixtures.hpp"
+#include "tools/sweep_csv.hpp"
 
 namespace sweep_test {
 
@@ -40,6 +41,20 @@ inline std::vector<std::string> lines(const std::string& text) {
   for (std::string line; std::getline(s, line);)
     if (!line.empty()) out.push_back(line);
   return out;
+}
+
+// The table as rows of fields (header first).
+inline std::vector<std::vector<std::string>> table(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  for (const std::string& line : lines(read_file(path))) rows.push_back(tools::parse_csv_line(line));
+  return rows;
+}
+
+inline std::size_t column(const std::vector<std::vector<std::string>>& t, const std::string& name) {
+  for (std::size_t i = 0; i < t.at(0).size(); ++i)
+    if (t[0][i] == name) return i;
+  ADD_FAILURE() << "no column " << name;
+  return 0;
 }
 
 // Whether a command exits 0 (for optional tools: GNU parallel, matplotlib).

@@ -14,6 +14,7 @@
 #include "workloads/integration/integrators.hpp"
 #include "workloads/integration/torque.hpp"
 #include "workloads/params.hpp"
+#include "workloads/registry.hpp"
 #include "workloads/run/run.hpp"
 
 namespace trajectory_test {

@@ -1,9 +1,13 @@
 #include "workloads/farm/dynamics_farm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include "workloads/farm/farm_program.hpp"
+#include "workloads/registry.hpp"
 
 namespace workloads {
 
@@ -14,11 +18,13 @@ using dynamics::JointVector;
 JointVector joint_vector(const Params& p, const std::string& name) {
   const std::vector<double>& v = p.real_list(name);
   if (v.size() != dynamics::kJoints)
-    throw std::invalid_argument("workload." + name + " needs " + std::to_string(dynamics::kJoints) +
-                                " values, got " + std::to_string(v.size()));
+    throw SettingError({"workload." + name}, "workload." + name + " needs " +
+                                                 std::to_string(dynamics::kJoints) +
+                                                 " values, got " + std::to_string(v.size()));
   JointVector out;
   for (int i = 0; i < dynamics::kJoints; ++i) {
-    if (!std::isfinite(v[i])) throw std::invalid_argument("workload." + name + " has a non-finite value");
+    if (!std::isfinite(v[i]))
+      throw SettingError({"workload." + name}, "workload." + name + " has a non-finite value");
     out(i) = v[i];
   }
   return out;
@@ -33,23 +39,26 @@ std::vector<int> workers_of(const network::Topology& t) {
 }
 
 int master_of(const network::Topology& t) {
-  if (t.host_processor() < 0) throw std::invalid_argument("the farm's master must be wired to the host");
+  if (t.host_processor() < 0)
+    throw SettingError({kNetworkKey}, "the farm's master must be wired to the host");
   return t.host_processor();
 }
 
-// One evaluation: the host sends (q, q̇) to the master, the farm computes D, C, c, h. Tp is the window the
-// scene chose (workload.tp_window); both windows are reported.
+// One evaluation: the host sends (q, q̇) to the master, the farm computes D, C, c, h. Tp is the
+// window the scene chose (workload.tp_window); both windows are reported.
 template <class S>
 class DynamicsFarm : public Workload {
  public:
   DynamicsFarm(const WorkloadContext& c)
-      : program_(require_robot(c), settings(c.params), master_of(c.topology), workers_of(c.topology)),
+      : program_(require_robot(c), settings(c.params), master_of(c.topology),
+                 workers_of(c.topology)),
         farm_window_(c.params.text("tp_window") == "farm"),
         precision_(c.params.text("precision")),
         q_(joint_vector(c.params, "q")),
         qd_(joint_vector(c.params, "qd")) {
     if (!dynamics::within_limits(require_robot(c), q_))
-      throw std::invalid_argument("workload.q is outside the joint limits of " + require_robot(c).name);
+      throw SettingError({"workload.q"},
+                         "workload.q is outside the joint limits of " + require_robot(c).name);
   }
 
   void build(network::Machine& m) override {
@@ -61,11 +70,12 @@ class DynamicsFarm : public Workload {
     m.spawn(network::Machine::kHost, "host", t800::Priority::low, [&state](network::Process& p) {
       p.out(state, {2 * dynamics::kJoints * std::int64_t(sizeof(S)), {}, "state"});
     });
-    m.spawn(master_of(m.topology()), "master", t800::Priority::low, [this, &state](network::Process& p) {
-      p.in(state);
-      round_ = program_.evaluate(p, q_, qd_, data_);
-      program_.finish(p);
-    });
+    m.spawn(master_of(m.topology()), "master", t800::Priority::low,
+            [this, &state](network::Process& p) {
+              p.in(state);
+              round_ = program_.evaluate(p, q_, qd_, data_);
+              program_.finish(p);
+            });
   }
 
   ResultValue results(const network::Machine& m) const override {
@@ -76,7 +86,8 @@ class DynamicsFarm : public Workload {
     r.set("subtasks", std::int64_t(program_.work().tasks.size()));
     r.set("workers", std::int64_t(program_.workers().size()));
     const double origin = farm_window_ ? round_.farm_start_us : round_.start_us;
-    const double tp_us = farm_window_ ? round_.farm_end_us - round_.farm_start_us : round_.end_us - round_.start_us;
+    const double tp_us =
+        farm_window_ ? round_.farm_end_us - round_.farm_start_us : round_.end_us - round_.start_us;
     r.set("tp_window", farm_window_ ? "farm" : "evaluation");
     r.set("tp_us", tp_us);
     r.set("tp_ms", tp_us / 1000.0);
@@ -117,7 +128,9 @@ class DynamicsFarm : public Workload {
       row.set("compute_us", a.compute_us());
       row.set("busy_in_tp_us", busy);
       row.set("utilisation_pct", 100.0 * busy / tp_us);
-      row.set("end_us", a.last_busy_us() - origin);  // when it last stopped working, from the start of Tp
+      // When it last stopped working, from the start of Tp; a worker that did nothing in Tp (no subtask,
+      // nothing to route) was done when Tp began.
+      row.set("end_us", std::max(0.0, a.last_busy_us() - origin));
       ResultValue names = ResultValue::list();
       for (int t : program_.done_by()[w]) names.push(program_.work().tasks[t].subtask.name);
       row.set("subtasks", names);
@@ -157,5 +170,39 @@ std::unique_ptr<Workload> make_dynamics_farm(const WorkloadContext& c) {
   if (c.params.text("precision") == "real64") return std::make_unique<DynamicsFarm<double>>(c);
   return std::make_unique<DynamicsFarm<float>>(c);
 }
+
+namespace {
+using T = ParamType;
+// clang-format off
+const Registration registered_dynamics_farm{
+    WorkloadInfo{"dynamics-farm",
+     "one forward-dynamics evaluation (D, C, h of the robot) farmed from a master to workers",
+     {
+         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+          {}, {}, {}},
+         {"model", T::text, std::string{"paper"},
+          "\"paper\" (64 subtasks, joint-6 Coriolis terms dropped) or \"full\" (every non-zero term)", {}, {},
+          {"paper", "full"}},
+         {"schedule", T::text, std::string{"static"},
+          "\"static\" (pre-computed list schedule), \"on-demand\" (workers ask for work) or \"explicit\" "
+          "(workload.allocation)",
+          {}, {}, {"static", "on-demand", "explicit"}},
+         {"allocation", T::text, std::string{}, "explicit allocation: \"P1: D11 D12 h2; P2: C1_23 ...\"", {},
+          {}, {}},
+         {"precision", T::text, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {},
+          {"real32", "real64"}},
+         {"tp_window", T::text, std::string{"farm"},
+          "what Tp covers: \"farm\" (first input sent to last result received) or \"evaluation\" (state "
+          "received to D, C, c, h assembled, with the master's sin/cos and assembly)",
+          {}, {}, {"farm", "evaluation"}},
+         {"buffer", T::integer, std::int64_t{2}, "on-demand: subtasks in flight per worker (1 = no buffering)",
+          1, 8, {}},
+         {"q", T::real_list, std::vector<double>{0.1, 0.2, 0.5, 0.3, 0.4, 0.5},
+          "joint positions (rad, q3 in m); default: the README's reference state", {}, {}, {}},
+         {"qd", T::real_list, std::vector<double>{0.1, -0.2, 0.05, 0.3, -0.1, 0.2}, "joint rates", {}, {}, {}},
+     }},
+    make_dynamics_farm};
+// clang-format on
+}  // namespace
 
 }  // namespace workloads

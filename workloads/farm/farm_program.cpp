@@ -4,6 +4,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include "t800/link_timing.hpp"
 #include "t800/timing_table.hpp"
 #include "workloads/dynamics/evaluate.hpp"
@@ -20,9 +22,10 @@ FarmProgram<S>::FarmProgram(const dynamics::RobotModel& model, FarmSettings sett
                             std::vector<int> workers)
     : model_(model), settings_(std::move(settings)), master_(master), workers_(std::move(workers)) {
   if (workers_.empty())
-    throw std::invalid_argument("the farm needs at least one worker besides the master");
+    throw SettingError({kNetworkKey}, "the farm needs at least one worker besides the master");
   if (settings_.schedule == "explicit" && settings_.allocation.empty())
-    throw std::invalid_argument("workload.schedule = \"explicit\" needs workload.allocation");
+    throw SettingError({"workload.allocation", "workload.schedule"},
+                       "workload.schedule = \"explicit\" needs workload.allocation");
 }
 
 template <class S>

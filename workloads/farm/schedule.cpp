@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 namespace workloads {
 
 namespace {
@@ -103,7 +105,7 @@ Allocation schedule_static(const std::vector<double>& task_ns, const std::vector
 Allocation parse_allocation(const std::string& text, const std::vector<std::string>& task_names,
                             const std::vector<std::string>& worker_names) {
   auto fail = [](const std::string& message) {
-    throw std::invalid_argument("workload.allocation: " + message);
+    throw SettingError({"workload.allocation"}, "workload.allocation: " + message);
   };
   Allocation a(worker_names.size());
   std::vector<int> owner(task_names.size(), -1);

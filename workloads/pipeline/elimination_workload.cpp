@@ -3,8 +3,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include "workloads/dynamics/subtask_set.hpp"
 #include "workloads/pipeline/pipeline.hpp"
+#include "workloads/registry.hpp"
 
 namespace workloads {
 
@@ -15,10 +18,10 @@ elimination::LinearSystem<double> given_system(const Params& p) {
   const std::vector<double>& b = p.real_list("b");
   const std::size_t n = b.size();
   if (n == 0 || a.size() != n * n)
-    throw std::invalid_argument(
-        "elimination: workload.a must hold n*n values (row by row) for the n "
-        "values of workload.b; got " +
-        std::to_string(a.size()) + " and " + std::to_string(n));
+    throw SettingError({"workload.a"},
+                       "elimination: workload.a must hold n*n values (row by row) for the n "
+                       "values of workload.b; got " +
+                           std::to_string(a.size()) + " and " + std::to_string(n));
   elimination::LinearSystem<double> s;
   for (std::size_t i = 0; i < n; ++i) {
     s.a.emplace_back(a.begin() + std::ptrdiff_t(i * n), a.begin() + std::ptrdiff_t((i + 1) * n));
@@ -30,9 +33,9 @@ elimination::LinearSystem<double> given_system(const Params& p) {
 dynamics::JointVector joint_vector(const Params& p, const std::string& name) {
   const std::vector<double>& v = p.real_list(name);
   if (v.size() != dynamics::kJoints)
-    throw std::invalid_argument("elimination: workload." + name + " needs " +
-                                std::to_string(dynamics::kJoints) + " values, got " +
-                                std::to_string(v.size()));
+    throw SettingError({"workload." + name}, "elimination: workload." + name + " needs " +
+                                                 std::to_string(dynamics::kJoints) +
+                                                 " values, got " + std::to_string(v.size()));
   dynamics::JointVector j;
   for (int i = 0; i < dynamics::kJoints; ++i) j(i) = v[std::size_t(i)];
   return j;
@@ -97,5 +100,66 @@ std::vector<std::string> table6_overrides(int m) {
   return {"network.topology=../topologies/elimination-m" + std::to_string(m) + ".toml",
           "workload.m=" + std::to_string(m)};
 }
+
+namespace {
+using T = ParamType;
+// clang-format off
+const Registration registered_elimination{
+    WorkloadInfo{"elimination",
+     "the paper's Gaussian-elimination pipeline (Fig. 7): L1 pivots and normalises, m level-2 "
+     "processors eliminate, L3 collects, L4 back-substitutes (workloads/pipeline/pipeline.hpp)",
+     {
+         {"m", T::integer, std::int64_t{0},
+          "level-2 processors E1..Em used; 0 = all of the topology's (elimination-m<m>.toml has m)", 0, 64,
+          {}},
+         {"precision", T::text, std::string{"real64"}, "occam REAL32 or REAL64 arithmetic", {}, {},
+          {"real32", "real64"}},
+         {"pivoting", T::text, std::string{"simple"},
+          "\"simple\" (the paper: interchange only when the pivot is unusable) or \"partial\" (largest in "
+          "the column)",
+          {}, {}, {"simple", "partial"}},
+         {"pivot_threshold", T::real, 0.0,
+          "a pivot p is unusable when |p| <= pivot_threshold * max|a_ij|; 0 = only an exact zero (the paper)",
+          0.0, 1.0, {}},
+         {"growth_check", T::flag, true,
+          "level 3 also checks the pivot growth (catches tiny non-zero pivots; costs a pass over each reduced "
+          "matrix and one over A on level 1); false = the paper's checks only (every row arrived, finite)",
+          {}, {}, {}},
+         {"growth_limit", T::real, 0.0,
+          "growth above which level 3 flags the result unstable; 0 = 1/sqrt(unit roundoff) of the precision "
+          "(4096 for REAL32, 9.5e7 for REAL64)",
+          0.0, 1e300, {}},
+         {"overlap", T::flag, false,
+          "pipelined steps: level 3 streams each row back to level 1 as it arrives, and level 1 starts the next "
+          "step once it has the rows its pivot choice needs (simple interchange: the first); false = strict steps",
+          {}, {}, {}},
+         {"buffered", T::flag, false,
+          "each level-2 processor runs input, elimination and output as three parallel processes joined by "
+          "one-row buffers (docs/table6.md); false = one process that takes, eliminates and passes a row",
+          {}, {}, {}},
+         {"source", T::text, std::string{"arm"},
+          "the system: \"arm\" (D q'' = tau - c - h of the robot at q, qd, tau), \"random\" (n x n from "
+          "seed) or \"given\" (workload.a, workload.b)",
+          {}, {}, {"arm", "random", "given"}},
+         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+          {}, {}, {}},
+         {"model", T::text, std::string{"full"},
+          "dynamics model for source = \"arm\": \"full\" or \"paper\" (64 subtasks)", {}, {},
+          {"paper", "full"}},
+         {"q", T::real_list, std::vector<double>{0.1, 0.2, 0.5, 0.3, 0.4, 0.5},
+          "joint positions (rad, q3 in m); default: the README's reference state", {}, {}, {}},
+         {"qd", T::real_list, std::vector<double>{0.1, -0.2, 0.05, 0.3, -0.1, 0.2}, "joint rates", {}, {}, {}},
+         {"tau", T::real_list, std::vector<double>{0, 0, 0, 0, 0, 0}, "joint torques (N m; N for joint 3)", {},
+          {}, {}},
+         {"n", T::integer, std::int64_t{6}, "unknowns, for source = \"random\"", 1, 64, {}},
+         {"seed", T::integer, std::int64_t{1}, "random generator seed, for source = \"random\"", 0, 9.0e15,
+          {}},
+         {"a", T::real_list, std::vector<double>{}, "source = \"given\": the n x n matrix, row by row", {}, {},
+          {}},
+         {"b", T::real_list, std::vector<double>{}, "source = \"given\": the right-hand side", {}, {}, {}},
+     }},
+    make_elimination};
+// clang-format on
+}  // namespace
 
 }  // namespace workloads

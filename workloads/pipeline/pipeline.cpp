@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 namespace workloads {
 
 // The pipeline on scalar T (float = REAL32, double = REAL64), fed once by the host.
@@ -56,21 +58,22 @@ class EngineT : public EliminationPipeline::Engine {
 EliminationPipeline::EliminationPipeline(const PipelineSettings& settings,
                                          const elimination::LinearSystem<double>& system,
                                          const network::Topology& topology) {
-  if (system.size() < 1) throw std::invalid_argument("elimination: empty system");
+  if (system.size() < 1) throw SettingError({"workload.b"}, "elimination: empty system");
   PipelineSettings s = settings;
   const int available = level2_count(topology);
   if (s.m == 0) s.m = available;
   if (s.m < 1 || s.m > available)
-    throw std::invalid_argument(
-        "elimination: workload.m = " + std::to_string(settings.m) + " but the topology " +
-        topology.name + " has " + std::to_string(available) +
-        " level-2 processors (E1, E2, ...); give workload.m from 1 to " +
-        std::to_string(available) + ", or a topology with more: " +
-        (settings.m >= 1 && settings.m <= 5
-             ? "--set network.topology=../topologies/elimination-m" + std::to_string(settings.m) +
-                   ".toml"
-             : std::string("topologies ship for m = 1..5 "
-                           "(configs/topologies/elimination-m1..m5.toml)")));
+    throw SettingError({"workload.m"},
+                       "elimination: workload.m = " + std::to_string(settings.m) +
+                           " but the topology " + topology.name + " has " +
+                           std::to_string(available) +
+                           " level-2 processors (E1, E2, ...); give workload.m from 1 to " +
+                           std::to_string(available) + ", or a topology with more: " +
+                           (settings.m >= 1 && settings.m <= 5
+                                ? "--set network.topology=../topologies/elimination-m" +
+                                      std::to_string(settings.m) + ".toml"
+                                : std::string("topologies ship for m = 1..5 "
+                                              "(configs/topologies/elimination-m1..m5.toml)")));
   const PipelineNodes nodes = find_pipeline_nodes(topology, s.m);
   if (s.precision == t800::Precision::real64)
     engine_ = std::make_unique<EngineT<double>>(s, system, nodes);

@@ -57,7 +57,8 @@ class EliminationPipeline : public Workload {
   std::unique_ptr<Engine> engine_;
 };
 
-// The "elimination" workload kind from a scene's parameters (catalog.cpp).
+// The "elimination" workload kind from a scene's parameters (registered in
+// elimination_workload.cpp).
 std::unique_ptr<Workload> make_elimination(const WorkloadContext& context);
 // The pipeline's settings the parameters give (workload.m, precision, pivoting, ...), and the
 // workload with settings of the caller's (a structure no scene parameter selects yet, e.g.

@@ -8,6 +8,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "workloads/setting_error.hpp"
+
 #include <systemc>
 
 #include "workloads/pipeline/costs.hpp"
@@ -39,9 +41,9 @@ std::int64_t real_bytes(t800::Precision precision) {
 int require_node(const network::Topology& t, const std::string& name, const std::string& role) {
   const int index = t.find(name);
   if (index < 0)
-    throw std::invalid_argument("elimination: the topology " + t.name + " has no processor " +
-                                name + " (" + role +
-                                "); use configs/topologies/elimination-m<m>.toml");
+    throw SettingError({kNetworkKey}, "elimination: the topology " + t.name + " has no processor " +
+                                          name + " (" + role +
+                                          "); use configs/topologies/elimination-m<m>.toml");
   return index;
 }
 
@@ -153,8 +155,8 @@ class PipelineProgram<T>::Levels {
       machine.declare_code(node, process, work.code);
     };
     auto [m, augment] = pieces_.run(
-        "augment", [](auto& a, auto& b) { return elimination::augment(a, b); },
-        named("A", s.a), named("b", s.b));
+        "augment", [](auto& a, auto& b) { return elimination::augment(a, b); }, named("A", s.a),
+        named("b", s.b));
     declare(nodes.l1, "level1", augment);
     C scale(0);
     if (rule.needs_scale()) {
@@ -179,18 +181,20 @@ class PipelineProgram<T>::Levels {
     for (int e : nodes.e) declare(e, "level2", eliminate);
     Rows<C> rows(std::size_t(n() - 1), row);
     C bound = elimination::growth_bound(scale, rule);
-    auto [check, check_cost] = pieces_.run(
-        "check", [&](auto& r, auto& b) { return elimination::check_step(r, b, rule); },
-        named("rows", rows), named("bound", bound));
-    declare(nodes.l3, "level3", check_cost);
+    declare(nodes.l3, "level3",
+            pieces_
+                .run(
+                    "check", [&](auto& r, auto& b) { return elimination::check_step(r, b, rule); },
+                    named("rows", rows), named("bound", bound))
+                .second);
     Rows<C> upper;
     for (int k = 0; k < n(); ++k) upper.emplace_back(std::size_t(n() - k), C(T(0.5)));
-    auto [x, back] = pieces_.run(
-        "back substitution", [](auto& u) { return elimination::back_substitute(u); },
-        named("U", upper));
-    declare(nodes.l4, "level4", back);
-    (void)check;
-    (void)x;
+    declare(nodes.l4, "level4",
+            pieces_
+                .run(
+                    "back substitution", [](auto& u) { return elimination::back_substitute(u); },
+                    named("U", upper))
+                .second);
   }
 
   // ---- the client's side ----
@@ -334,10 +338,12 @@ class PipelineProgram<T>::Levels {
         named("A", system.a), named("b", system.b));
     const C scale =
         rule.needs_scale()
-            ? run_piece(p, "scale", [](auto& a) { return elimination::matrix_scale(a); }, named("m", m))
+            ? run_piece(
+                  p, "scale", [](auto& a) { return elimination::matrix_scale(a); }, named("m", m))
             : C(0);
     const C limit = run_piece(
-        p, "limit", [&](auto& s) { return elimination::pivot_limit(s, rule); }, named("scale", scale));
+        p, "limit", [&](auto& s) { return elimination::pivot_limit(s, rule); },
+        named("scale", scale));
     if (!settings.overlap) return steps(p, std::move(m), scale, limit);
     // Overlap: a receiver stores the rows L3 streams back while the steps go on.
     bool go = true;
@@ -696,11 +702,9 @@ class PipelineProgram<T>::Levels {
 
   void forward(Process& p, int k, Row<C>& row, std::size_t i, C bound, bool& unstable) {
     const Rows<C> one{row};
-    const auto check =
-        run_piece(
-            p, "check",
-            [&](auto& r, auto& b) { return elimination::check_step(r, b, settings.rule); },
-            named("rows", one), named("bound", bound));
+    const auto check = run_piece(
+        p, "check", [&](auto& r, auto& b) { return elimination::check_step(r, b, settings.rule); },
+        named("rows", one), named("bound", bound));
     largest_ = std::max(largest_, elimination::largest_magnitude(one));  // diagnostic only
     if (check.status == Status::non_finite)
       fail(k, Status::non_finite,
@@ -729,9 +733,9 @@ class PipelineProgram<T>::Levels {
       upper.push_back(std::move(pivot.row));
     }
     outcome.eliminated_us = p.now_us();
-    const Row<C> x =
-        run_piece(p, "back substitution",
-                  [](auto& u) { return elimination::back_substitute(u); }, named("U", upper));
+    const Row<C> x = run_piece(
+        p, "back substitution", [](auto& u) { return elimination::back_substitute(u); },
+        named("U", upper));
     outcome.end_us = p.now_us();
     record(x, unstable);
     if (reply_) p.out(*reply_, {reals(outcome.qdd.size()), outcome.qdd, "qdd"});

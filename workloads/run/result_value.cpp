@@ -34,6 +34,19 @@ double ResultValue::number() const {
   throw std::logic_error("result value is not a number");
 }
 
+std::string ResultValue::first_non_finite(const std::string& path) const {
+  if (const auto* x = std::get_if<double>(&v_)) return std::isfinite(*x) ? "" : path;
+  if (const auto* l = std::get_if<List>(&v_))
+    for (std::size_t i = 0; i < l->size(); ++i)
+      if (std::string at = (*l)[i].first_non_finite(path + "[" + std::to_string(i) + "]"); !at.empty())
+        return at;
+  if (const auto* r = std::get_if<Record>(&v_))
+    for (const auto& [key, value] : *r)
+      if (std::string at = value.first_non_finite(path.empty() ? key : path + "." + key); !at.empty())
+        return at;
+  return "";
+}
+
 namespace {
 std::string quote(const std::string& s) {
   std::string out = "\"";

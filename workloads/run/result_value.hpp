@@ -30,6 +30,9 @@ class ResultValue {
   void push(ResultValue value);
   const ResultValue* get(const std::string& key) const;
   double number() const;
+  // Where the first NaN or infinity is ("c[0]", "per_worker[2].end_us", under `path`), or "" when every
+  // number is finite: JSON cannot hold them, and a result that has one is not a result.
+  std::string first_non_finite(const std::string& path = "") const;
 
   bool is_record() const { return std::holds_alternative<Record>(v_); }
   bool is_list() const { return std::holds_alternative<List>(v_); }

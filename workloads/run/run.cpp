@@ -78,6 +78,15 @@ std::vector<TraceTrack> trace_tracks(const network::Machine& m, const RunReport&
   return tracks;
 }
 
+// A workload that failed says so in its results' `failure` (elimination, trajectory); any other
+// result with a NaN or an infinity failed as well, whether or not the workload noticed.
+std::string failure_of(const ResultValue& results) {
+  if (const ResultValue* failure = results.get("failure"); failure && !failure->to_text().empty())
+    return failure->to_text();
+  const std::string at = results.first_non_finite();
+  return at.empty() ? "" : "workload." + at + " is not a finite number (NaN or infinite)";
+}
+
 RunSetting setting_of(const RunInputs& in) {
   RunSetting s;
   s.kind = in.kind;
@@ -115,8 +124,8 @@ ResultValue setting_value(const RunSetting& s) {
 }  // namespace
 
 std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& in) {
-  std::unique_ptr<Workload> workload =
-      make_workload(in.kind, WorkloadContext{in.params, in.topology, in.robot.get()});
+  std::unique_ptr<Workload> workload = make_workload(
+      in.kind, WorkloadContext{in.params, in.topology, in.robot.get(), &in.placement});
   workload->build(machine);
   return workload;
 }
@@ -131,12 +140,18 @@ RunReport run(const RunInputs& in) {
   report.fidelity = in.options.fidelity;
   report.run_time_checks = in.options.checked;
   report.blocked = machine.run();
+  report.wait_cycle = machine.wait_cycle();
+  report.limit = machine.limit_reached();
   report.simulated_us = machine.simulated_us();
-  report.events = sc_core::sc_delta_count();
+  report.events = machine.events();
+  report.elaboration_s = machine.elaboration_s();
   report.processors = processor_reports(machine, report.simulated_us);
   report.links = link_reports(machine, report.simulated_us);
   if (in.options.keep_intervals) report.tracks = trace_tracks(machine, report);
-  if (report.blocked.empty()) report.workload = workload->results(machine);
+  if (report.blocked.empty() && report.limit == network::Limit::none) {
+    report.workload = workload->results(machine);
+    report.failure = failure_of(report.workload);
+  }
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }
@@ -146,6 +161,7 @@ ResultValue RunReport::to_value() const {
   v.set("scene", name);
   v.set("simulated_us", simulated_us);
   v.set("wall_s", wall_s);
+  v.set("elaboration_s", elaboration_s);
   v.set("events", std::int64_t(events));
   v.set("setting", setting_value(setting));
   ResultValue f;
@@ -195,6 +211,9 @@ ResultValue RunReport::to_value() const {
     links_value.push(r);
   }
   v.set("links", links_value);
+  if (!failure.empty()) v.set("failure", failure);
+  if (limit != network::Limit::none)
+    v.set("stopped_by", limit == network::Limit::sim_time ? "max_sim_time" : "max_wall_time");
   if (!blocked.empty()) {
     ResultValue b = ResultValue::list();
     for (const auto& p : blocked) {
@@ -202,9 +221,13 @@ ResultValue RunReport::to_value() const {
       r.set("process", p.process);
       r.set("processor", p.processor);
       r.set("status", p.status);
+      r.set("waits_for", p.waits_for);
       b.push(r);
     }
     v.set("deadlock", b);
+    ResultValue cycle = ResultValue::list();
+    for (const std::string& step : wait_cycle) cycle.push(step);
+    v.set("wait_cycle", cycle);
   }
   v.set("workload", workload);
   return v;

@@ -9,6 +9,7 @@
 #include "network/machine.hpp"
 #include "workloads/dynamics/robot_model.hpp"
 #include "workloads/params.hpp"
+#include "workloads/placement.hpp"
 #include "workloads/run/result_value.hpp"
 
 namespace workloads {
@@ -20,6 +21,7 @@ struct RunInputs {
   std::string kind;
   Params params;
   std::shared_ptr<const dynamics::RobotModel> robot;  // for workloads with a `robot` parameter
+  Placement placement;                                // the scene's [placement]
   // Where options.precision came from, said in the report: a default is stated, never silent.
   std::string precision_source = "the simulator's default";
 };
@@ -72,6 +74,7 @@ struct RunReport {
   std::string name;
   double simulated_us = 0;
   double wall_s = 0;
+  double elaboration_s = 0;  // of wall_s, the set-up before simulating (Machine::elaboration_s)
   RunSetting setting;
   network::Fidelity fidelity;   // what the run modelled and skipped
   bool run_time_checks = true;  // compiled into the generated code
@@ -80,6 +83,11 @@ struct RunReport {
   std::vector<ProcessorReport> processors;
   std::vector<LinkReport> links;
   std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
+  std::vector<std::string> wait_cycle;           // the deadlock's cycle of waits, when there is one
+  network::Limit limit = network::Limit::none;   // a limit stopped the run: no workload results
+  // Non-empty: the run ended but its results are not results: the workload reported a failure (a solve
+  // without a usable pivot) or a number came out NaN or infinite (REAL32 overflow). Says which.
+  std::string failure;
   ResultValue workload;
   std::vector<TraceTrack>
       tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)

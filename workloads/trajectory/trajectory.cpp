@@ -4,9 +4,12 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <optional>
 #include <stdexcept>
+
+#include "workloads/setting_error.hpp"
 
 #include <systemc>
 
@@ -18,7 +21,9 @@
 #include "workloads/integration/integrators.hpp"
 #include "workloads/integration/torque.hpp"
 #include "workloads/pipeline/pipeline_program.hpp"
+#include "workloads/registry.hpp"
 #include "workloads/run/operation_mix.hpp"
+#include "workloads/run/output_file.hpp"
 
 namespace workloads {
 
@@ -45,14 +50,16 @@ JointVector joint_vector(const Params& p, const std::string& name, bool broadcas
   const std::vector<double>& v = p.real_list(name);
   const bool one = broadcast && v.size() == 1;
   if (v.size() != dynamics::kJoints && !one)
-    throw std::invalid_argument(
-        "trajectory: workload." + name + " needs " + std::to_string(dynamics::kJoints) + " values" +
-        (broadcast ? " (or one for every joint)" : "") + ", got " + std::to_string(v.size()));
+    throw SettingError({"workload." + name}, "trajectory: workload." + name + " needs " +
+                                                 std::to_string(dynamics::kJoints) + " values" +
+                                                 (broadcast ? " (or one for every joint)" : "") +
+                                                 ", got " + std::to_string(v.size()));
   JointVector out;
   for (int i = 0; i < dynamics::kJoints; ++i) {
     out(i) = v[one ? 0 : std::size_t(i)];
     if (!std::isfinite(out(i)))
-      throw std::invalid_argument("trajectory: workload." + name + " has a non-finite value");
+      throw SettingError({"workload." + name},
+                         "trajectory: workload." + name + " has a non-finite value");
   }
   return out;
 }
@@ -60,7 +67,8 @@ JointVector joint_vector(const Params& p, const std::string& name, bool broadcas
 std::optional<integration::TorqueTable> torque_table(const Params& p) {
   if (p.text("torque") != "csv") return std::nullopt;
   if (p.text("torque_csv").empty())
-    throw std::invalid_argument("trajectory: workload.torque = \"csv\" needs workload.torque_csv");
+    throw SettingError({"workload.torque"},
+                       "trajectory: workload.torque = \"csv\" needs workload.torque_csv");
   const auto how = p.text("interpolation") == "hold" ? integration::TorqueInterpolation::hold
                                                      : integration::TorqueInterpolation::linear;
   return integration::TorqueTable::load(p.text("torque_csv"), how);
@@ -97,7 +105,7 @@ TrajectorySettings settings_from(const Params& p) {
 // processors have the names PipelineNodes looks for).
 int master_of(const network::Topology& t) {
   if (t.host_processor() < 0)
-    throw std::invalid_argument("trajectory: the farm's master must be wired to the host");
+    throw SettingError({kNetworkKey}, "trajectory: the farm's master must be wired to the host");
   return t.host_processor();
 }
 
@@ -113,9 +121,10 @@ std::vector<int> farm_workers(const network::Topology& t) {
 PipelineNodes pipeline_nodes(const network::Topology& t, int m) {
   const int available = level2_count(t);
   if (m < 1 || m > available)
-    throw std::invalid_argument("trajectory: workload.m = " + std::to_string(m) +
-                                " but the topology " + t.name + " has " +
-                                std::to_string(available) + " level-2 processors (E1, E2, ...)");
+    throw SettingError({"workload.m"}, "trajectory: workload.m = " + std::to_string(m) +
+                                           " but the topology " + t.name + " has " +
+                                           std::to_string(available) +
+                                           " level-2 processors (E1, E2, ...)");
   return find_pipeline_nodes(t, m);
 }
 
@@ -166,7 +175,8 @@ class Trajectory : public Workload {
         master_(master_of(c.topology)),
         farm_(model_, s_.farm, master_, farm_workers(c.topology)),
         pipeline_(s_.pipeline, pipeline_nodes(c.topology, s_.pipeline.m), dynamics::kJoints) {
-    if (!(s_.dt > 0)) throw std::invalid_argument("trajectory: workload.dt must be positive");
+    if (!(s_.dt > 0))
+      throw SettingError({"workload.dt"}, "trajectory: workload.dt must be positive");
   }
 
   void build(network::Machine& m) override {
@@ -176,6 +186,7 @@ class Trajectory : public Workload {
     rhs_ = right_hand_side_work();
     m.declare_code(master_, "master", integrator_.code);
     m.declare_code(master_, "master", rhs_.code);
+    progress_ = m.options().progress;
     subtasks_ = farm_.subtasks();
     skip_numerics_asked_ = m.options().fidelity.skip_numerics;
     if (!m.options().fidelity.reuse_steps)
@@ -208,8 +219,8 @@ class Trajectory : public Workload {
     occam::declare(next.q.data(), dynamics::kJoints, "q.next");
     occam::declare(next.qd.data(), dynamics::kJoints, "qdot.next");
     const dynamics::JointVectorT<C> zero = dynamics::JointVectorT<C>::Zero();
-    const integration::State<C> result =
-        integration::step(s_.method, x, C(S(s_.dt)), [&](const auto&, const auto&) { return zero; });
+    const integration::State<C> result = integration::step(
+        s_.method, x, C(S(s_.dt)), [&](const auto&, const auto&) { return zero; });
     for (int i = 0; i < dynamics::kJoints; ++i) {
       next.q(i) = result.q(i);
       next.qd(i) = result.qd(i);
@@ -258,6 +269,7 @@ class Trajectory : public Workload {
         StepRecord row{t, wide(x.q), wide(x.qd), torque(t, wide(x.q), wide(x.qd)), {}};
         x = advance(p, t, x, row.times);
         records_.push_back(row);
+        if (progress_) progress_(n, s_.steps);
         if (!check_limits(wide(x.q), n) && s_.stop_at_limits) break;
       }
     } catch (const SolveFailed& e) {
@@ -413,7 +425,8 @@ class Trajectory : public Workload {
     times.dynamics_us += us_between(round_start, sc_core::sc_time_stamp());
     Vec rhs;
     const dynamics::JointVectorT<C> tau = counted_torque(t, wide(q), wide(qd));
-    const dynamics::JointVectorT<C> r = tau - data_.c.template cast<C>() - data_.h.template cast<C>();
+    const dynamics::JointVectorT<C> r =
+        tau - data_.c.template cast<C>() - data_.h.template cast<C>();
     for (int i = 0; i < dynamics::kJoints; ++i) rhs(i) = r(i).value();
     const sc_core::sc_time before = sc_core::sc_time_stamp();
     p.compute(rhs_, "right-hand side");
@@ -490,6 +503,7 @@ class Trajectory : public Workload {
   std::array<bool, dynamics::kJoints> outside_{};
   int steps_outside_ = 0;
   std::string failure_;
+  std::function<void(std::int64_t, std::int64_t)> progress_;
 };
 
 ResultValue joint_values(const JointVector& v) {
@@ -593,8 +607,8 @@ ResultValue Trajectory<S>::results(const network::Machine&) const {
 // t, q, q̇, τ and the step's simulated time and split; the last row is the final state.
 template <class S>
 void Trajectory<S>::write_csv() const {
-  std::ofstream out(s_.output_csv);
-  if (!out) throw std::runtime_error(s_.output_csv + ": cannot write the trajectory");
+  OutputFile file(s_.output_csv, "workload.output_csv");
+  std::ostream& out = file.out();
   out.precision(17);
   out << "t";
   for (const char* name : {"q", "qd", "tau"})
@@ -608,6 +622,7 @@ void Trajectory<S>::write_csv() const {
     out << ',' << s.step_us << ',' << s.dynamics_us << ',' << s.solve_us << ',' << s.integration_us
         << ',' << s.communication_us << '\n';
   }
+  file.commit();
 }
 
 }  // namespace
@@ -618,5 +633,55 @@ std::unique_ptr<Workload> make_trajectory(const WorkloadContext& c) {
     return std::make_unique<Trajectory<double>>(c, std::move(s));
   return std::make_unique<Trajectory<float>>(c, std::move(s));
 }
+
+namespace {
+using T = ParamType;
+// clang-format off
+const Registration registered_trajectory{
+    WorkloadInfo{"trajectory",
+     "forward dynamics end to end: the dynamics farm, the elimination pipeline and an integrator on the farm's "
+     "master, step by step (workloads/trajectory/trajectory.hpp)",
+     {
+         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+          {}, {}, {}},
+         {"model", T::text, std::string{"full"},
+          "dynamics model: \"full\" (every non-zero term) or \"paper\" (64 subtasks, joint-6 Coriolis terms "
+          "dropped)",
+          {}, {}, {"paper", "full"}},
+         {"precision", T::text, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {},
+          {"real32", "real64"}},
+         {"m", T::integer, std::int64_t{3}, "level-2 processors E1..Em of the pipeline", 1, 64, {}},
+         {"pivoting", T::text, std::string{"simple"},
+          "\"simple\" (the paper: interchange only when the pivot is unusable) or \"partial\"", {}, {},
+          {"simple", "partial"}},
+         {"pivot_threshold", T::real, 0.0,
+          "a pivot p is unusable when |p| <= pivot_threshold * max|a_ij|; 0 = only an exact zero", 0.0, 1.0, {}},
+         {"integrator", T::text, std::string{"rk4"},
+          "\"rk4\" (4 evaluations per step) or \"semi-implicit-euler\" (1 evaluation per step)", {}, {},
+          {"rk4", "semi-implicit-euler"}},
+         {"steps", T::integer, std::int64_t{100}, "integrator steps", 1, 1e7, {}},
+         {"dt", T::real, 1e-3, "step, s", 1e-9, 10.0, {}},
+         {"torque", T::text, std::string{"zero"},
+          "\"zero\" (passive), \"csv\" (workload.torque_csv) or \"pd\" (kp, kd to target)", {}, {},
+          {"zero", "csv", "pd"}},
+         {"torque_csv", T::text, std::string{},
+          "torque table, relative to the scene: header t,tau1,...,tau6, then rows with t increasing", {}, {}, {}},
+         {"interpolation", T::text, std::string{"linear"},
+          "torque table between rows: \"linear\" or \"hold\" (zero-order hold); held beyond its ends", {}, {},
+          {"linear", "hold"}},
+         {"kp", T::real_list, std::vector<double>{100.0}, "PD proportional gains, one or six values", {}, {}, {}},
+         {"kd", T::real_list, std::vector<double>{20.0}, "PD derivative gains, one or six values", {}, {}, {}},
+         {"target", T::real_list, std::vector<double>{0.0, 0.0, 0.5, 0.0, 0.0, 0.0}, "PD target q", {}, {}, {}},
+         {"q", T::real_list, std::vector<double>{0.1, 0.2, 0.5, 0.3, 0.4, 0.5}, "initial joint positions", {}, {},
+          {}},
+         {"qd", T::real_list, std::vector<double>{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, "initial joint rates", {}, {}, {}},
+         {"stop_at_limits", T::flag, false,
+          "stop at the first step that leaves the joint limits (reported either way, never clamped)", {}, {}, {}},
+         {"output_csv", T::text, std::string{},
+          "trajectory CSV (t, q, qd, tau, step_us and its split), relative to the scene; empty = none", {}, {}, {}},
+     }},
+    make_trajectory};
+// clang-format on
+}  // namespace
 
 }  // namespace workloads

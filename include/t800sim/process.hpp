@@ -1,0 +1,106 @@
+// A process of a program, as its body sees it: ordinary sequential C++ that computes, talks over
+// typed channels, runs parallel branches and reads its TIMER -- occam's primitives, on the
+// simulated transputer it is placed on. No SystemC here: the simulator's process is behind it.
+//
+//   void prefix(t800sim::Process& p, In<INT> in, Out<INT> out) {
+//     p.out(out, 0);
+//     for (;;) p.out(out, p.in(in));
+//   }
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "t800sim/channel.hpp"
+#include "t800sim/protocol.hpp"
+
+namespace network {
+class Process;
+}
+namespace t800 {
+struct OperationMix;
+}
+
+namespace t800sim {
+
+class Kernel;
+using Mix = t800::OperationMix;
+
+class Process {
+ public:
+  using Body = std::function<void(Process&)>;
+  using IndexedBody = std::function<void(Process&, int)>;
+
+  explicit Process(network::Process& impl) : impl_(impl) {}
+
+  const std::string& name() const;
+  std::string processor() const;  // the processor's name ("host" for the host PC)
+  double now_us() const;          // simulated time
+
+  // Computation on this process's CPU: a cycle count, an operation mix, or a recorded kernel
+  // (t800sim/kernel.hpp), timed from its T800 code.
+  void compute(std::int64_t cycles, const std::string& label = {});
+  void compute(const Mix& mix, const std::string& label = {});
+  void compute(const Kernel& kernel, const std::string& label = {});
+
+  // c ! v: returns when the value has been taken (a protocol's items one communication each).
+  template <class P>
+  void out(const Out<P>& c, const value_of<P>& v) {
+    auto wire = open(c.slot(), true);
+    protocol<P>::send(wire, v);
+  }
+  template <class P>
+  void out(const Chan<P>& c, const value_of<P>& v) {
+    out(c.out(), v);
+  }
+  // c ? v
+  template <class P>
+  value_of<P> in(const In<P>& c) {
+    auto wire = open(c.slot(), false);
+    return protocol<P>::receive(wire);
+  }
+  template <class P>
+  value_of<P> in(const Chan<P>& c) {
+    return in(c.in());
+  }
+
+  // PAR: the branches run as processes on this processor; returns when all have ended.
+  void par(const std::vector<Body>& branches);
+  // PAR i = 0 FOR n
+  void par_for(int n, const IndexedBody& body);
+  // PRI PAR: `high` at high priority, the others at low.
+  void pri_par(const Body& high, const std::vector<Body>& low);
+
+  // TIMER ? t: 1 us ticks at high priority, 64 us at low (the T800's two clocks).
+  std::int64_t timer() const;
+  double tick_us() const;
+  // TIMER ? AFTER t: waits until the clock reads later than t.
+  void wait_after(std::int64_t t);
+
+  // The simulator's process, for the SDK's own code (t800sim/alt.hpp).
+  network::Process& impl() { return impl_; }
+  // Throws std::logic_error, naming both, unless this process is placed where the channel's
+  // writing (or reading) end is.
+  void check_end(const detail::ChannelSlot* slot, bool writing) const;
+
+ private:
+  // One end of a channel as a protocol's communications see it.
+  class Wire final : public detail::Wire {
+   public:
+    Wire(network::Process& process, network::Channel& channel)
+        : process_(process), channel_(channel) {}
+    void send(std::int64_t bytes, std::any value) override;
+    std::any receive() override;
+
+   private:
+    network::Process& process_;
+    network::Channel& channel_;
+  };
+  Wire open(const detail::ChannelSlot* slot, bool writing);
+
+  network::Process& impl_;
+};
+
+}  // namespace t800sim

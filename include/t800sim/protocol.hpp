@@ -1,0 +1,257 @@
+// What a channel carries: occam's protocols as C++ types, how a value of each travels, and the
+// bytes it takes on the wire -- by occam's rules (occam 2 reference manual, "Protocols"): the
+// items of a sequential protocol are communicated one after the other, each its own input and
+// output; a counted array sends its count, then that many elements; a variant protocol sends its
+// tag, a BYTE, then the case's items. A single item (a primitive, or an array of them) is one
+// communication of all its bytes.
+//
+// clang-format off
+//   occam                                 t800sim                                value in C++
+//   CHAN OF REAL32 c:                     Chan<REAL32>                           float
+//   CHAN OF [6]REAL32 c:                  Chan<Array<REAL32, 6>>                 std::array<float, 6>
+//   CHAN OF INT::[]REAL32 c:              Chan<Counted<INT, REAL32>>             std::vector<float>
+//   CHAN OF ANY c: c ! [b FROM 0 FOR n]   Chan<Block<BYTE>>                      std::vector<uint8_t>
+//   PROTOCOL P IS INT; REAL64:            Chan<Sequential<INT, REAL64>>          std::tuple<int32_t, double>
+//   PROTOCOL Q CASE data; REAL32 | stop   Chan<Variant<Case<REAL32>, Case<>>>    std::variant<Case<REAL32>, Case<>>
+// clang-format on
+#pragma once
+
+#include <any>
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace t800sim {
+
+// occam's primitive types.
+using BOOL = bool;
+using BYTE = std::uint8_t;
+using INT16 = std::int16_t;
+using INT = std::int32_t;  // a T800's word
+using INT32 = std::int32_t;
+using INT64 = std::int64_t;
+using REAL32 = float;
+using REAL64 = double;
+
+template <class T, std::size_t N>
+struct Array {};  // [N]T
+template <class Count, class T>
+struct Counted {};  // Count::[]T
+// A block of elements whose length both ends know (occam's `c ! [buffer FROM 0 FOR n]` on a
+// CHAN OF ANY): one communication, no count sent.
+template <class T>
+struct Block {};
+template <class... Items>
+struct Sequential {};  // Items; ...
+// One case of a variant protocol: its items (none for a bare tag).
+template <class... Items>
+struct Case {
+  std::tuple<Items...> items;
+  friend bool operator==(const Case& a, const Case& b) { return a.items == b.items; }
+  friend bool operator!=(const Case& a, const Case& b) { return !(a == b); }
+};
+template <class... Cases>
+struct Variant {};  // CASE ...
+
+namespace detail {
+
+// One end of a channel as a protocol sees it: a sequence of communications (occam's `!` and `?` of
+// one item each). The simulator's channels implement it; values stay typed at both ends, the
+// wire in between carries them opaquely.
+class Wire {
+ public:
+  virtual ~Wire() = default;
+  virtual void send(std::int64_t bytes, std::any value) = 0;
+  virtual std::any receive() = 0;
+};
+
+template <class T>
+T take(Wire& w) {
+  std::any value = w.receive();
+  if (const T* v = std::any_cast<T>(&value)) return *v;
+  throw std::logic_error("a channel delivered a value of another protocol");
+}
+
+template <class T>
+constexpr bool is_primitive = std::is_arithmetic_v<T>;
+
+template <class T>
+const char* primitive_name() {
+  if (std::is_same_v<T, bool>) return "BOOL";
+  if (std::is_same_v<T, std::uint8_t>) return "BYTE";
+  if (std::is_same_v<T, std::int16_t>) return "INT16";
+  if (std::is_same_v<T, std::int32_t>) return "INT";
+  if (std::is_same_v<T, std::int64_t>) return "INT64";
+  if (std::is_same_v<T, float>) return "REAL32";
+  if (std::is_same_v<T, double>) return "REAL64";
+  return "?";
+}
+
+}  // namespace detail
+
+// protocol<P>: value_type (what a program sends and receives), bytes(v) (the bytes on the wire),
+// name() (as occam would write it), send/receive (the communications, in occam's order).
+template <class P, class Enable = void>
+struct protocol;
+
+template <class T>
+struct protocol<T, std::enable_if_t<detail::is_primitive<T>>> {
+  using value_type = T;
+  static constexpr bool single = true;  // one communication
+  static std::int64_t bytes(const value_type&) {
+    return std::is_same_v<T, bool> ? 1 : std::int64_t(sizeof(T));
+  }
+  static std::string name() { return detail::primitive_name<T>(); }
+  static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
+  static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
+};
+
+template <class T, std::size_t N>
+struct protocol<Array<T, N>> {
+  static_assert(protocol<T>::single, "an array's elements are primitives or arrays of them");
+  using value_type = std::array<typename protocol<T>::value_type, N>;
+  static constexpr bool single = true;
+  static std::int64_t bytes(const value_type& v) {
+    std::int64_t n = 0;
+    for (const auto& x : v) n += protocol<T>::bytes(x);
+    return n;
+  }
+  static std::string name() { return "[" + std::to_string(N) + "]" + protocol<T>::name(); }
+  static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
+  static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
+};
+
+template <class T>
+struct protocol<Block<T>> {
+  static_assert(protocol<T>::single, "a block's elements are primitives or arrays of them");
+  using value_type = std::vector<typename protocol<T>::value_type>;
+  static constexpr bool single = true;
+  static std::int64_t bytes(const value_type& v) {
+    std::int64_t n = 0;
+    for (const auto& x : v) n += protocol<T>::bytes(x);
+    return n;
+  }
+  static std::string name() { return "ANY ([]" + protocol<T>::name() + ")"; }
+  static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
+  static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
+};
+
+// The count, then the elements (no second communication for an empty array).
+template <class Count, class T>
+struct protocol<Counted<Count, T>> {
+  static_assert(std::is_integral_v<Count>, "a counted array's count is an integer type");
+  static_assert(protocol<T>::single, "a counted array's elements are primitives or arrays of them");
+  using value_type = std::vector<typename protocol<T>::value_type>;
+  static constexpr bool single = false;
+  static std::int64_t bytes(const value_type& v) {
+    std::int64_t n = protocol<Count>::bytes(Count(0));
+    for (const auto& x : v) n += protocol<T>::bytes(x);
+    return n;
+  }
+  static std::string name() { return protocol<Count>::name() + "::[]" + protocol<T>::name(); }
+  static void send(detail::Wire& w, const value_type& v) {
+    protocol<Count>::send(w, Count(v.size()));
+    if (!v.empty()) w.send(bytes(v) - protocol<Count>::bytes(Count(0)), v);
+  }
+  static value_type receive(detail::Wire& w) {
+    const auto count = protocol<Count>::receive(w);
+    if (count <= 0) return {};
+    auto v = detail::take<value_type>(w);
+    if (v.size() != std::size_t(count))
+      throw std::logic_error("a counted array's count and length differ");
+    return v;
+  }
+};
+
+template <class... Items>
+struct protocol<Sequential<Items...>> {
+  using value_type = std::tuple<typename protocol<Items>::value_type...>;
+  static constexpr bool single = false;
+  static std::int64_t bytes(const value_type& v) {
+    return std::apply(
+        [](const auto&... x) { return (std::int64_t(0) + ... + protocol<Items>::bytes(x)); }, v);
+  }
+  static std::string name() {
+    std::string s;
+    ((s += (s.empty() ? "" : "; ") + protocol<Items>::name()), ...);
+    return s;
+  }
+  static void send(detail::Wire& w, const value_type& v) {
+    std::apply([&w](const auto&... x) { (protocol<Items>::send(w, x), ...); }, v);
+  }
+  // Braced initialisation: the items are received in order.
+  static value_type receive(detail::Wire& w) { return value_type{protocol<Items>::receive(w)...}; }
+};
+
+template <class... Items>
+struct protocol<Case<Items...>> {
+  using value_type = Case<Items...>;
+  static constexpr bool single = false;
+  static std::int64_t bytes(const value_type& c) {
+    return protocol<Sequential<Items...>>::bytes(c.items);
+  }
+  static std::string name() {
+    const std::string items = protocol<Sequential<Items...>>::name();
+    return items.empty() ? "tag" : items;
+  }
+  static void send(detail::Wire& w, const value_type& c) {
+    protocol<Sequential<Items...>>::send(w, c.items);
+  }
+  static value_type receive(detail::Wire& w) {
+    return {protocol<Sequential<Items...>>::receive(w)};
+  }
+};
+
+template <class... Cases>
+struct protocol<Variant<Cases...>> {
+  static_assert(sizeof...(Cases) <= 256, "a variant protocol's tag is a BYTE");
+  using value_type = std::variant<Cases...>;
+  static constexpr bool single = false;
+  static std::int64_t bytes(const value_type& v) {
+    return 1 + std::visit(
+                   [](const auto& c) { return protocol<std::decay_t<decltype(c)>>::bytes(c); }, v);
+  }
+  static std::string name() { return case_names(std::index_sequence_for<Cases...>{}); }
+  static void send(detail::Wire& w, const value_type& v) {
+    protocol<BYTE>::send(w, BYTE(v.index()));
+    std::visit([&w](const auto& c) { protocol<std::decay_t<decltype(c)>>::send(w, c); }, v);
+  }
+  static value_type receive(detail::Wire& w) {
+    const std::size_t tag = protocol<BYTE>::receive(w);
+    return receive_case(w, tag, std::index_sequence_for<Cases...>{});
+  }
+
+ private:
+  template <std::size_t... I>
+  static std::string case_names(std::index_sequence<I...>) {
+    std::string s = "CASE";
+    ((s += (I ? " | " : " ") + std::to_string(I) + ": " + protocol<Cases>::name()), ...);
+    return s;
+  }
+  template <std::size_t... I>
+  static value_type receive_case(detail::Wire& w, std::size_t tag, std::index_sequence<I...>) {
+    using Receive = value_type (*)(detail::Wire&);
+    static constexpr Receive cases[] = {[](detail::Wire& wire) {
+      return value_type(std::in_place_index<I>, protocol<Cases>::receive(wire));
+    }...};
+    if (tag >= sizeof...(Cases)) throw std::logic_error("a variant protocol's tag is out of range");
+    return cases[tag](w);
+  }
+};
+
+template <class P>
+using value_of = typename protocol<P>::value_type;
+
+// The bytes value `v` takes on a channel of protocol P.
+template <class P>
+std::int64_t wire_bytes(const value_of<P>& v) {
+  return protocol<P>::bytes(v);
+}
+
+}  // namespace t800sim

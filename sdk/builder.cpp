@@ -1,0 +1,107 @@
+#include <stdexcept>
+
+#include "network/machine.hpp"
+#include "network/topology.hpp"
+#include "t800sim/program.hpp"
+
+namespace t800sim {
+
+int Network::processors() const {
+  return int(topology_.processors.size());
+}
+
+const std::string& Network::processor_name(int index) const {
+  return topology_.processors.at(std::size_t(index)).name;
+}
+
+int Network::find(const std::string& name) const {
+  return topology_.find(name);
+}
+
+std::vector<int> Network::neighbours(int index) const {
+  return topology_.neighbours(index);
+}
+
+int Network::host_processor() const {
+  return std::max(topology_.host_processor(), 0);
+}
+
+ProcessDecl& Builder::process(const std::string& name, Process::Body body) {
+  return add(name, 1, false, [body](Process& p, int) { body(p); });
+}
+
+ProcessDecl& Builder::processes(const std::string& name, int n, Process::IndexedBody body) {
+  return add(name, n, true, std::move(body));
+}
+
+ProcessDecl& Builder::add(const std::string& name, int n, bool group, Process::IndexedBody body) {
+  if (name.empty() || name.find_first_of("[]. ") != std::string::npos)
+    throw std::invalid_argument("process name \"" + name +
+                                "\": a process needs a name without spaces, dots or brackets");
+  if (n < 1)
+    throw std::invalid_argument("process group " + name + ": needs at least one process, not " +
+                                std::to_string(n));
+  for (const ProcessDecl& p : processes_)
+    if (p.name == name) throw std::invalid_argument("process " + name + " is declared twice");
+  ProcessDecl d;
+  d.name = name;
+  d.count = n;
+  d.group = group;
+  d.body = std::move(body);
+  processes_.push_back(std::move(d));
+  return processes_.back();
+}
+
+detail::ChannelSlot* Builder::declare(const std::string& name, const std::string& protocol,
+                                      const std::string& from, const std::string& to) {
+  end(name, protocol, from, true);
+  return end(name, protocol, to, false);
+}
+
+detail::ChannelSlot* Builder::end(const std::string& name, const std::string& protocol,
+                                  const std::string& process, bool writer) {
+  if (name.empty()) throw std::invalid_argument("a channel needs a name");
+  detail::ChannelSlot* slot = nullptr;
+  for (detail::ChannelSlot& c : channels_)
+    if (c.name == name) slot = &c;
+  if (!slot) {
+    channels_.push_back({name, protocol, {}, {}, -1, 0, nullptr});
+    slot = &channels_.back();
+  }
+  std::string& owner = writer ? slot->writer : slot->reader;
+  const char* role = writer ? "outputs to" : "inputs from";
+  if (!owner.empty() && owner != process)
+    throw std::invalid_argument("channel " + name + ": both " + owner + " and " + process + " " +
+                                role + " it; an occam channel has one writer and one reader");
+  if (slot->protocol != protocol) {
+    const std::string& other = writer ? slot->reader : slot->writer;
+    throw std::invalid_argument("channel " + name + ": protocol mismatch -- " + process + " " +
+                                role + " it as " + protocol + ", " + other +
+                                (writer ? " inputs from" : " outputs to") + " it as " +
+                                slot->protocol);
+  }
+  owner = process;
+  return slot;
+}
+
+void Builder::code(const std::string& process, const Kernel& kernel) {
+  code_.push_back({process, kernel});
+}
+
+double Results::cycle_ns(const std::string& processor) const {
+  const int node = machine_.topology().find(processor);
+  if (node < 0) throw std::invalid_argument("results: no processor named " + processor);
+  return machine_.compute_model(node).cycle_ns();
+}
+
+std::string Results::processor_type(const std::string& processor) const {
+  const int node = machine_.topology().find(processor);
+  if (node < 0) throw std::invalid_argument("results: no processor named " + processor);
+  return std::string(machine_.compute_model(node).processor().name);
+}
+
+double Results::simulated_us() const {
+  return machine_.simulated_us();
+}
+
+}  // namespace t800sim

@@ -1,0 +1,106 @@
+#include "t800sim/process.hpp"
+
+#include <stdexcept>
+
+#include "network/channel.hpp"
+#include "network/machine.hpp"
+#include "network/process.hpp"
+#include "t800sim/kernel.hpp"
+
+namespace t800sim {
+
+const std::string& Process::name() const {
+  return impl_.name();
+}
+
+std::string Process::processor() const {
+  return impl_.machine().node_name(impl_.node());
+}
+
+double Process::now_us() const {
+  return impl_.now_us();
+}
+
+void Process::compute(std::int64_t cycles, const std::string& label) {
+  impl_.compute(cycles, label);
+}
+
+void Process::compute(const Mix& mix, const std::string& label) {
+  impl_.compute(mix, label);
+}
+
+void Process::compute(const Kernel& kernel, const std::string& label) {
+  impl_.compute(kernel.work(), label.empty() ? kernel.name() : label);
+}
+
+void Process::Wire::send(std::int64_t bytes, std::any value) {
+  process_.out(channel_, {bytes, std::move(value), channel_.name});
+}
+
+std::any Process::Wire::receive() {
+  return process_.in(channel_).payload;
+}
+
+void Process::check_end(const detail::ChannelSlot* slot, bool writing) const {
+  if (!slot || !slot->impl)
+    throw std::logic_error("process " + name() +
+                           " used a channel that was not declared by the program's build");
+  const network::Channel& c = *slot->impl;
+  const int end = writing ? c.from : c.to;
+  if (end != impl_.node())
+    throw std::logic_error("process " + name() + " on " + processor() +
+                           (writing ? " outputs to" : " inputs from") + " channel " + c.name +
+                           ", whose " + (writing ? "writer" : "reader") + " is placed on " +
+                           impl_.machine().node_name(end));
+}
+
+Process::Wire Process::open(const detail::ChannelSlot* slot, bool writing) {
+  check_end(slot, writing);
+  return Wire(impl_, *slot->impl);
+}
+
+void Process::par(const std::vector<Body>& branches) {
+  std::vector<network::Process::Body> bodies;
+  for (const Body& b : branches)
+    bodies.emplace_back([b](network::Process& child) {
+      Process p(child);
+      b(p);
+    });
+  impl_.par(bodies);
+}
+
+void Process::par_for(int n, const IndexedBody& body) {
+  std::vector<Body> branches;
+  for (int i = 0; i < n; ++i) branches.emplace_back([body, i](Process& p) { body(p, i); });
+  par(branches);
+}
+
+void Process::pri_par(const Body& high, const std::vector<Body>& low) {
+  auto wrap = [](const Body& b) {
+    return network::Process::Body([b](network::Process& child) {
+      Process p(child);
+      b(p);
+    });
+  };
+  std::vector<network::Process::Body> lows;
+  for (const Body& b : low) lows.push_back(wrap(b));
+  impl_.pri_par(wrap(high), lows);
+}
+
+std::int64_t Process::timer() const {
+  // TIMER ? t compiles to ldtimer; stl t.
+  impl_.run_instructions(
+      {{t800::isa::Op::ldtimer, 0, 0, false, {}, "TIMER ?"},
+       {t800::isa::Op::stl, 1, 0, false, {t800::isa::Region::workspace, -1}, "t"}});
+  return impl_.clock();
+}
+
+double Process::tick_us() const {
+  return impl_.tick_us();
+}
+
+void Process::wait_after(std::int64_t t) {
+  impl_.wait_after(t);
+}
+
+}  // namespace t800sim

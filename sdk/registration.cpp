@@ -1,0 +1,56 @@
+#include <stdexcept>
+
+#include "sdk/program_workload.hpp"
+#include "t800sim/workload.hpp"
+#include "workloads/registry.hpp"
+
+namespace t800sim {
+
+void register_workload(WorkloadSpec spec) {
+  if (!spec.make) throw std::invalid_argument("workload kind " + spec.kind + " has no factory");
+  auto make = std::move(spec.make);
+  const std::string kind = spec.kind;
+  workloads::register_kind({spec.kind, spec.summary, std::move(spec.params)},
+                           [make, kind](const workloads::WorkloadContext& context) {
+                             const Network network(context.topology);
+                             return std::make_unique<detail::ProgramWorkload>(
+                                 kind, make(context.params, network), context);
+                           });
+}
+
+Param integer_param(std::string name, std::int64_t fallback, std::string help, double min,
+                    double max) {
+  return {std::move(name), workloads::ParamType::integer, fallback, std::move(help), min, max, {}};
+}
+
+Param real_param(std::string name, double fallback, std::string help, double min, double max) {
+  return {std::move(name), workloads::ParamType::real, fallback, std::move(help), min, max, {}};
+}
+
+Param flag_param(std::string name, bool fallback, std::string help) {
+  return {std::move(name), workloads::ParamType::flag, fallback, std::move(help), {}, {}, {}};
+}
+
+Param text_param(std::string name, std::string fallback, std::string help,
+                 std::vector<std::string> choices) {
+  return {
+      std::move(name),   workloads::ParamType::text, std::move(fallback), std::move(help), {}, {},
+      std::move(choices)};
+}
+
+Param real_list_param(std::string name, std::vector<double> fallback, std::string help) {
+  return {std::move(name),
+          workloads::ParamType::real_list,
+          std::move(fallback),
+          std::move(help),
+          {},
+          {},
+          {}};
+}
+
+Param processor_param(std::string name, std::string help) {
+  return {
+      std::move(name), workloads::ParamType::processor, std::string{}, std::move(help), {}, {}, {}};
+}
+
+}  // namespace t800sim

@@ -1,0 +1,43 @@
+// Every input in the committed fuzz corpus (fuzz/corpus/: what libFuzzer found interesting, and every
+// input that once crashed a reader) goes through the fuzz targets' harness: accepted or refused with a
+// clean error, never anything else (fuzz/harness.hpp).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "fuzz/harness.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> corpus(const std::string& target) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(T800SIM_SOURCE_DIR) / "fuzz" / "corpus" / target))
+    if (entry.is_regular_file()) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+template <class F>
+void replay(const std::string& target, F&& harness) {
+  const std::vector<fs::path> files = corpus(target);
+  EXPECT_FALSE(files.empty());
+  for (const fs::path& file : files) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    try {
+      harness(reinterpret_cast<const std::uint8_t*>(data.data()), data.size());
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << file.filename() << ": " << e.what();
+    }
+  }
+}
+
+TEST(FuzzCorpus, ConfigurationFiles) { replay("config", fuzz::read_config); }
+
+TEST(FuzzCorpus, SetOverrides) { replay("set", fuzz::apply_overrides); }
+
+}  // namespace

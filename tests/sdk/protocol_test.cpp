@@ -1,0 +1,86 @@
+// occam's protocols as C++ types: how many communications a value takes and how many bytes each
+// carries (the occam 2 reference manual's rules), checked against a wire that records them.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "t800sim/protocol.hpp"
+
+namespace {
+
+using namespace t800sim;
+
+// Records each communication's bytes and hands the values back in order.
+class RecordingWire : public detail::Wire {
+ public:
+  void send(std::int64_t bytes, std::any value) override {
+    sizes.push_back(bytes);
+    values.push_back(std::move(value));
+  }
+  std::any receive() override { return values.at(next++); }
+  std::vector<std::int64_t> sizes;
+  std::vector<std::any> values;
+  std::size_t next = 0;
+};
+
+template <class P>
+std::pair<std::vector<std::int64_t>, value_of<P>> round_trip(const value_of<P>& v) {
+  RecordingWire w;
+  protocol<P>::send(w, v);
+  return {w.sizes, protocol<P>::receive(w)};
+}
+
+TEST(Protocol, PrimitivesAreOneCommunicationOfTheirSize) {
+  EXPECT_EQ(round_trip<INT>(-7), std::make_pair(std::vector<std::int64_t>{4}, INT(-7)));
+  EXPECT_EQ(round_trip<REAL64>(2.5), std::make_pair(std::vector<std::int64_t>{8}, 2.5));
+  EXPECT_EQ(round_trip<BYTE>(200), std::make_pair(std::vector<std::int64_t>{1}, BYTE(200)));
+  EXPECT_EQ(round_trip<BOOL>(true).first, std::vector<std::int64_t>{1});
+}
+
+TEST(Protocol, AnArrayIsOneCommunication) {
+  const value_of<Array<REAL32, 6>> v{1, 2, 3, 4, 5, 6};
+  EXPECT_EQ((round_trip<Array<REAL32, 6>>(v)), std::make_pair(std::vector<std::int64_t>{24}, v));
+  EXPECT_EQ((protocol<Array<REAL32, 6>>::name()), "[6]REAL32");
+}
+
+// INT::[]REAL32: the count (an INT) then the elements; nothing more for an empty array.
+TEST(Protocol, ACountedArraySendsItsCountThenItsElements) {
+  const std::vector<float> v{1.5f, 2.5f, 3.5f};
+  EXPECT_EQ((round_trip<Counted<INT, REAL32>>(v)),
+            std::make_pair(std::vector<std::int64_t>{4, 12}, v));
+  EXPECT_EQ((round_trip<Counted<BYTE, REAL64>>({})),
+            std::make_pair(std::vector<std::int64_t>{1}, std::vector<double>{}));
+  EXPECT_EQ((protocol<Counted<INT, REAL32>>::name()), "INT::[]REAL32");
+  EXPECT_EQ((wire_bytes<Counted<INT, REAL32>>(v)), 16);
+}
+
+// A sequential protocol's items are communicated one after the other, each its own communication.
+TEST(Protocol, ASequentialProtocolSendsEachItemOnItsOwn) {
+  using P = Sequential<INT, REAL64, Array<BYTE, 3>>;
+  const value_of<P> v{9, -1.25, {1, 2, 3}};
+  EXPECT_EQ(round_trip<P>(v), std::make_pair(std::vector<std::int64_t>{4, 8, 3}, v));
+  EXPECT_EQ(protocol<P>::name(), "INT; REAL64; [3]BYTE");
+}
+
+// A variant: the tag (a BYTE), then the chosen case's items; a bare tag is one byte.
+TEST(Protocol, AVariantSendsItsTagThenItsCase) {
+  using P = Variant<Case<REAL32, INT>, Case<>>;
+  const value_of<P> data{std::in_place_index<0>, Case<REAL32, INT>{{0.5f, 3}}};
+  const auto [sizes, back] = round_trip<P>(data);
+  EXPECT_EQ(sizes, (std::vector<std::int64_t>{1, 4, 4}));
+  ASSERT_EQ(back.index(), 0u);
+  EXPECT_EQ(std::get<0>(back).items, std::get<0>(data).items);
+  const value_of<P> stop{std::in_place_index<1>};
+  EXPECT_EQ(round_trip<P>(stop).first, std::vector<std::int64_t>{1});
+  EXPECT_EQ(round_trip<P>(stop).second.index(), 1u);
+  EXPECT_EQ(wire_bytes<P>(data), 9);
+}
+
+// A value of another protocol arriving is a program error, not a silent reinterpretation.
+TEST(Protocol, AValueOfAnotherProtocolIsAnError) {
+  RecordingWire w;
+  protocol<REAL64>::send(w, 1.0);
+  EXPECT_THROW(protocol<INT>::receive(w), std::logic_error);
+}
+
+}  // namespace

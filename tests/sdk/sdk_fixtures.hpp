@@ -1,0 +1,56 @@
+// Runs a program written with the SDK on a small network, as `t800sim run` would (placed, joined,
+// spawned, run), without a scene file.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "network/families.hpp"
+#include "network/machine.hpp"
+#include "sdk/program_workload.hpp"
+#include "t800sim/alt.hpp"
+#include "t800sim/program.hpp"
+
+namespace sdk_test {
+
+inline network::Topology chain(int workers) {
+  return network::generate(network::Family::chain, workers, {}, {"test", 0, 0});
+}
+
+struct Outcome {
+  std::vector<network::BlockedProcess> blocked;
+  workloads::ResultValue results;
+  double simulated_us = 0;
+};
+
+// Takes ownership of the program; `program` stays usable for reading what it recorded.
+template <class P>
+Outcome run(P* program, const network::Topology& topology,
+            const workloads::Placement& placement = {}) {
+  network::MachineOptions options;
+  options.link.speed_mbps = 20;
+  network::Machine machine(topology, options);
+  const workloads::Params params;
+  const workloads::WorkloadContext context{params, topology, nullptr, &placement};
+  t800sim::detail::ProgramWorkload workload("test", std::unique_ptr<t800sim::Program>(program),
+                                            context);
+  workload.build(machine);
+  Outcome o;
+  o.blocked = machine.run();
+  o.simulated_us = machine.simulated_us();
+  if (o.blocked.empty()) o.results = workload.results(machine);
+  return o;
+}
+
+// A program from a build function, for tests that need no results of their own.
+class Lambda : public t800sim::Program {
+ public:
+  explicit Lambda(std::function<void(t800sim::Builder&)> build) : build_(std::move(build)) {}
+  void build(t800sim::Builder& b) override { build_(b); }
+
+ private:
+  std::function<void(t800sim::Builder&)> build_;
+};
+
+}  // namespace sdk_test
