@@ -30,14 +30,17 @@ void run_body(Process* p, Process::Body body) {
 
 Machine::Machine(const Topology& topology, const MachineOptions& options)
     : topology_(topology), routes_(topology_), options_(options) {
+  const auto code = std::make_shared<t800::CodeCache>();  // a kernel compiled once for all
   for (const ProcessorSpec& spec : topology_.processors) {
     transputers_.push_back(
         std::make_unique<t800::Transputer>(module_name(spec.name).c_str(), spec.config));
     transputers_.back()->activity().keep_intervals(options.keep_intervals);
     transputers_.back()->cpu().set_fidelity(options.fidelity.compute);
     compute_models_.emplace_back(
-        spec.config, t800::ComputeSettings{options.precision, options.code_efficiency,
-                                           options.fidelity.compute_cost, options.checked});
+        spec.config,
+        t800::ComputeSettings{options.precision, options.code_efficiency,
+                              options.fidelity.compute_cost, options.checked},
+        code);
   }
   elaborate_links();
 }
