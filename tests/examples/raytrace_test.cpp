@@ -64,8 +64,12 @@ TEST(RaytraceFarm, TimeIsBoundedByTheWorkAndFallsWithWorkers) {
     const nlohmann::json w = farm("tree", workers)["workload"];
     const double tp = w["tp_us"].get<double>(), compute = w["compute_us"].get<double>();
     EXPECT_GE(tp, compute / workers) << workers;
-    if (workers == 1) EXPECT_GT(tp, compute);
-    if (previous > 0) EXPECT_LT(tp, previous) << workers;
+    if (workers == 1) {
+      EXPECT_GT(tp, compute);
+    }
+    if (previous > 0) {
+      EXPECT_LT(tp, previous) << workers;
+    }
     previous = tp;
     for (const auto& worker : w["per_worker"]) EXPECT_GT(worker["lines"].get<int>(), 0);
   }
