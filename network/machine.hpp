@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "network/channel.hpp"
+#include "network/faults.hpp"
 #include "network/fidelity.hpp"
 #include "network/process.hpp"
 #include "network/topology.hpp"
@@ -27,14 +28,14 @@ struct MachineOptions {
   t800::LinkConfig link;  // default for connections without their own speed
   t800::Precision precision = t800::Precision::real64;
   double code_efficiency = 1.0;
-  bool checked = true;  // occam's run-time checks compiled into the generated code
+  bool checked = true;          // occam's run-time checks compiled into the generated code
   bool keep_intervals = false;  // for traces
   Fidelity fidelity;
-  // Limits (seconds; 0 = none): the run stops when its simulated time or the host's wall time reaches
-  // one, with processes still running (Machine::limit_reached says which).
+  // Limits (seconds; 0 = none): the run stops when its simulated time or the host's wall time
+  // reaches one, with processes still running (Machine::limit_reached says which).
   double max_sim_s = 0, max_wall_s = 0;
-  // Called by workloads that know how far they are (a trajectory: steps done of all), for a progress
-  // display; may be empty.
+  // Called by workloads that know how far they are (a trajectory: steps done of all), for a
+  // progress display; may be empty.
   std::function<void(std::int64_t done, std::int64_t total)> progress;
 };
 
@@ -107,6 +108,9 @@ class Machine {
   std::optional<std::pair<t800::Link*, int>> link_between(int a, int b) const;
   // The processes running on nodes, for reports.
   const std::vector<std::unique_ptr<Process>>& processes() const { return processes_; }
+  // The faults injected into this run and what each did (network/faults.hpp).
+  FaultLog& faults() { return faults_; }
+  const FaultLog& faults() const { return faults_; }
 
  private:
   void elaborate_links();
@@ -146,6 +150,7 @@ class Machine {
   std::uint64_t events_ = 0;
   Limit limit_ = Limit::none;
   std::vector<std::string> wait_cycle_;
+  FaultLog faults_;
 };
 
 }  // namespace network

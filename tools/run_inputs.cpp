@@ -59,6 +59,7 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
     in.precision_source =
         "the simulator's default; workload " + scene.workload_kind + " declares no precision";
   }
+  in.faults = scene.faults;
   in.kind = scene.workload_kind;
   in.params = scene.workload;
   in.placement = scene.placement;
