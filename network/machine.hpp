@@ -28,14 +28,14 @@ struct MachineOptions {
   t800::LinkConfig link;  // default for connections without their own speed
   t800::Precision precision = t800::Precision::real64;
   double code_efficiency = 1.0;
-  bool checked = true;          // occam's run-time checks compiled into the generated code
+  bool checked = true;  // occam's run-time checks compiled into the generated code
   bool keep_intervals = false;  // for traces
   Fidelity fidelity;
-  // Limits (seconds; 0 = none): the run stops when its simulated time or the host's wall time
-  // reaches one, with processes still running (Machine::limit_reached says which).
+  // Limits (seconds; 0 = none): the run stops when its simulated time or the host's wall time reaches
+  // one, with processes still running (Machine::limit_reached says which).
   double max_sim_s = 0, max_wall_s = 0;
-  // Called by workloads that know how far they are (a trajectory: steps done of all), for a
-  // progress display; may be empty.
+  // Called by workloads that know how far they are (a trajectory: steps done of all), for a progress
+  // display; may be empty.
   std::function<void(std::int64_t done, std::int64_t total)> progress;
 };
 
