@@ -164,6 +164,11 @@ int stranding_fault(const Machine& m, const Process& p) {
     if (!r.fired) continue;
     if (r.spec.kind == FaultSpec::Kind::halt && p.node() == m.topology().find(r.spec.processor))
       return int(i);
+    // At an end of a faulted link: its partners gave it up.
+    if (r.spec.kind != FaultSpec::Kind::halt &&
+        (p.node() == m.topology().find(r.spec.from) || p.node() == m.topology().find(r.spec.to)) &&
+        p.channel())
+      return int(i);
     if (const Channel* c = p.channel()) {
       const std::vector<int>& path = c->path;
       const bool crosses =

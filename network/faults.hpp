@@ -78,8 +78,9 @@ class FaultLog {
 void arm_faults(Machine& m);
 
 // Whether a process left blocked at the end of a run waits because of a fault that took effect (it
-// is on a halted processor, its channel crosses a faulted link or a halted processor, or it waits
-// for PAR branches that do), and which fault.
+// is on a halted processor; it waits on a channel at an end of a faulted link, whose partner gave
+// it up; its channel crosses a faulted link or a halted processor; or it waits for PAR branches
+// that do), and which fault.
 int stranding_fault(const Machine& m, const Process& p);
 
 }  // namespace network

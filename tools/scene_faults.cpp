@@ -1,6 +1,7 @@
 #include "tools/scene_faults.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "network/toml_util.hpp"
 
@@ -161,10 +162,19 @@ FaultSpec parse_fault_flag(const std::string& text, const network::Topology& top
         throw ConfigError({flag, 0, 0}, "'" + key +
                                             "' is not a key; valid keys are kind, link, "
                                             "processor, at_us, xor");
-    bool number = !value.empty();
-    for (char c : value)
-      number = number && (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' ||
-                          c == 'E' || c == '+' || c == '-' || c == 'x');
+    // A number starts with a digit, a sign or a point and is one whole (processor names, "E3",
+    // are strings).
+    bool number = !value.empty() && (std::isdigit(static_cast<unsigned char>(value[0])) ||
+                                     value[0] == '+' || value[0] == '-' || value[0] == '.');
+    if (number) {
+      std::size_t used = 0;
+      try {
+        std::stod(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      number = used == value.size() || value.rfind("0x", 0) == 0;
+    }
     std::string quoted = "\"";
     for (char c : value) {
       if (c == '"' || c == '\\') quoted += '\\';
