@@ -98,8 +98,10 @@ int FaultLog::detected(const Machine& m, const std::vector<int>& path, const std
 
 void FaultLog::recovered(const Machine& m, const std::vector<int>& path, const std::string& how) {
   for (FaultRecord& r : records_) {
-    if (r.detected_by.empty() || !on_path(m, r, path)) continue;
-    r.recovered_how = how;  // the last recovery counts: the fault's cost runs until then
+    // The first recovery counts: a fault that keeps acting (a dead link, a halted processor) is
+    // recovered from once the program has worked round it the first time.
+    if (r.detected_by.empty() || !r.recovered_how.empty() || !on_path(m, r, path)) continue;
+    r.recovered_how = how;
     r.recovered_us = sc_core::sc_time_stamp().to_seconds() * 1e6;
   }
 }

@@ -44,7 +44,8 @@ struct FaultRecord {
   std::string recovered_how;  // empty: not recovered
   double recovered_us = -1;
   std::vector<std::string> stranded;  // processes left waiting for ever because of it
-  // Time from its effect to the program's recovery, us (-1 when not recovered).
+  // Time from its first effect to the program's first recovery from it, us (-1 when not
+  // recovered).
   double cost_us() const { return recovered_us >= 0 ? recovered_us - fired_us : -1; }
   std::string describe() const;  // "drop on L1->E2 at 150 us"
 };

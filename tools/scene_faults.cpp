@@ -193,7 +193,11 @@ FaultSpec parse_fault_flag(const std::string& text, const network::Topology& top
   } catch (const ConfigError& e) {
     throw ConfigError({flag, 0, 0}, "not a list of KEY=VALUE: " + e.message());
   }
-  return FaultReader(flag, topology).read(*root["fault"].as_table(), {flag, 0, 0});
+  try {
+    return FaultReader(flag, topology).read(*root["fault"].as_table(), {flag, 0, 0});
+  } catch (const ConfigError& e) {  // a flag has no lines: name it alone
+    throw ConfigError({flag, 0, 0}, e.message());
+  }
 }
 
 }  // namespace tools

@@ -271,9 +271,11 @@ double FarmProgram<S>::predicted_us(const network::Machine& m, std::size_t w,
                                     const std::vector<int>& tasks) const {
   const t800::LinkTiming link(m.options().link);
   const double hops = double(m.topology().shortest_path(master_, workers_[w]).size() - 1);
+  // The tasks' cycles on this worker, with its memory as placed (code off chip costs more).
+  const t800::ComputeModel& model = m.compute_model(workers_[w]);
   double compute_ns = 0;
-  for (int t : tasks) compute_ns += double(work_.tasks[std::size_t(t)].cycles);
-  compute_ns *= m.compute_model(workers_[w]).cycle_ns();
+  for (int t : tasks) compute_ns += double(model.cycles(work_.tasks[std::size_t(t)].work));
+  compute_ns *= model.cycle_ns();
   const std::int64_t bytes =
       (dynamics::worker_input_reals(model_) + std::int64_t(tasks.size())) * kReal;
   return (compute_ns + hops * link.arrival_ns(bytes)) / 1000.0;
