@@ -205,6 +205,32 @@ TEST(FaultSettings, ABadFaultFlagNamesTheFlag) {
   EXPECT_NE(form.out.find("is not KEY=VALUE"), std::string::npos) << form.out;
 }
 
+// sweep passes --fault to every point, and checks it before starting.
+TEST(FaultSettings, ASweepInjectsTheFaultIntoEveryPoint) {
+  const std::filesystem::path dir =
+      std::filesystem::path(T800SIM_BINARY_DIR) / "test-output" / "faults-sweep";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string csv = (dir / "r.csv").string();
+  const auto o = cli_test::run(std::string("sweep ") + kPipeline +
+                               " --vary workload.recovery_timeout_us=300,1000 --set "
+                               "workload.recovery=true --fault 'kind=halt,processor=E3,at_us=300' "
+                               "-j 1 -o " +
+                               csv + " 2>&1");
+  EXPECT_EQ(o.exit_code, 0) << o.out;
+  std::ifstream in(csv);
+  std::string line;
+  int ok = 0;
+  while (std::getline(in, line)) ok += line.find(",ok") != std::string::npos;
+  EXPECT_EQ(ok, 2);
+  const auto bad = cli_test::run(std::string("sweep ") + kPipeline +
+                                 " --vary workload.m=3 --fault 'kind=halt,processor=E9,at_us=0' "
+                                 "-o " +
+                                 csv + " 2>&1");
+  EXPECT_EQ(bad.exit_code, 2) << bad.out;
+  EXPECT_NE(bad.out.find("--fault kind=halt,processor=E9,at_us=0"), std::string::npos) << bad.out;
+}
+
 TEST(FaultSettings, RecoveryNeedsStrictUnbufferedSteps) {
   const auto o = cli_test::run(std::string("run ") + kPipeline +
                                " --set workload.recovery=true --set workload.overlap=true 2>&1");

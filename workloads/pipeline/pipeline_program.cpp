@@ -154,10 +154,6 @@ class PipelineProgram<T>::Levels {
     serve_ = serve;
     if (settings.overlap && serve != Serve::once)
       throw std::invalid_argument("elimination pipeline: overlap serves one system only");
-    if (settings.recovery && (settings.overlap || settings.buffered))
-      throw SettingError(
-          {"workload.recovery", settings.overlap ? "workload.overlap" : "workload.buffered"},
-          "workload.recovery needs strict, unbuffered steps (overlap = false, buffered = false)");
     if (settings.recovery && serve != Serve::once)
       throw std::invalid_argument("elimination pipeline: recovery serves one system only");
     register_payloads();
@@ -318,7 +314,6 @@ class PipelineProgram<T>::Levels {
       out_ports_.push_back({e_in_.back(), {e}});
     }
     if (fan_out.served.empty()) return;
-    require_no_relay();
     fan_out.inputs.push_back(&machine.channel("L1->X", nodes.l1, fan_out.node));
     out_ports_.push_back({fan_out.inputs.back(), fan_out.served});
     fan_out.rounds = serve_ == Serve::once ? 1 : Relay::kUntilStopped;
@@ -345,7 +340,6 @@ class PipelineProgram<T>::Levels {
       in_ports_.push_back({e_out_.back(), {e}});
     }
     if (fan_in.served.empty()) return;
-    require_no_relay();
     fan_in.outputs.push_back(&machine.channel("Y->L3", fan_in.node, nodes.l3));
     in_ports_.push_back({fan_in.outputs.back(), fan_in.served});
     fan_in.rounds = serve_ == Serve::once ? 1 : Relay::kUntilStopped;
@@ -861,13 +855,6 @@ class PipelineProgram<T>::Levels {
   double longest_message_us_ = 0;  // twice the longest message's time on a link, and 10 us
 
   // ---- recovery (PipelineSettings::recovery) ----
-
-  void require_no_relay() const {
-    if (settings.recovery)
-      throw SettingError({"workload.recovery", kNetworkKey},
-                         "workload.recovery needs every level-2 processor wired to L1 and L3 (no "
-                         "fan-out X or fan-in Y: configs/topologies/elimination-m1..m3.toml)");
-  }
 
   std::int64_t checked_bytes(std::size_t count) const { return reals(count) + 4; }
   std::int64_t pivot_bytes(const CheckedPivot& m) const {
