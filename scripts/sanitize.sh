@@ -9,7 +9,7 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DT800SIM_SANITIZE=ON >/dev/
 cmake --build build-asan -j"$(nproc)"
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 # Children the tests start (t800sim run, sweeps) inherit these.
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0:suppressions=$PWD/tests/sanitizer/asan.supp"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)"

@@ -33,6 +33,12 @@ void Process::compute(const Kernel& kernel, const std::string& label) {
   impl_.compute(kernel.work(), label.empty() ? kernel.name() : label);
 }
 
+std::int64_t Process::cycles(const Kernel& kernel) const {
+  if (impl_.node() < 0)
+    throw std::logic_error("process " + name() + " runs on the host, which runs no kernels");
+  return impl_.machine().compute_model(impl_.node()).cycles(kernel.work());
+}
+
 void Process::Wire::send(std::int64_t bytes, std::any value) {
   process_.out(channel_, {bytes, std::move(value), channel_.name});
 }

@@ -53,4 +53,34 @@ Param processor_param(std::string name, std::string help) {
       std::move(name), workloads::ParamType::processor, std::string{}, std::move(help), {}, {}, {}};
 }
 
+Param precision_param(std::string name, std::string fallback, std::string help) {
+  return {std::move(name),
+          workloads::ParamType::precision,
+          std::move(fallback),
+          std::move(help),
+          {},
+          {},
+          {}};
+}
+
+Param input_file_param(std::string name, std::string help) {
+  return {std::move(name),
+          workloads::ParamType::input_file,
+          std::string{},
+          std::move(help),
+          {},
+          {},
+          {}};
+}
+
+Param output_file_param(std::string name, std::string help) {
+  return {std::move(name),
+          workloads::ParamType::output_file,
+          std::string{},
+          std::move(help),
+          {},
+          {},
+          {}};
+}
+
 }  // namespace t800sim

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "tools/robot_file.hpp"
+#include "workloads/registry.hpp"
 #include "workloads/run/output_file.hpp"
 #include "workloads/run/workload.hpp"
 #include "workloads/setting_error.hpp"
@@ -12,15 +13,13 @@ namespace tools {
 
 namespace {
 
-void load_robot_of(const Scene& scene, const std::filesystem::path& resolved,
+void load_robot_of(const Scene& scene, const std::string& key, const std::string& path,
                    workloads::RunInputs& in) {
   try {
-    in.robot = std::make_shared<const dynamics::RobotModel>(load_robot(resolved.string()));
+    in.robot = std::make_shared<const dynamics::RobotModel>(load_robot(path));
   } catch (const network::ConfigError& e) {
     if (e.where().line > 0) throw;  // an error inside the robot file already says where
-    throw network::ConfigError(e.where(), e.message() + " (workload.robot = \"" +
-                                              scene.workload.text("robot") +
-                                              "\", relative to the scene file " + scene.file + ")");
+    throw network::ConfigError(origin_of(scene, {key}), e.message() + " (" + key + ")");
   }
 }
 
@@ -35,6 +34,37 @@ void check_workload(const Scene& scene, const workloads::RunInputs& in) {
   }
 }
 
+// Files to read must be there now, not after the simulation.
+void check_files(const Scene& scene, const workloads::WorkloadInfo& info,
+                 const workloads::Params& params) {
+  for (const workloads::ParamSpec& p : info.params) {
+    if (p.type != workloads::ParamType::input_file || params.text(p.name).empty()) continue;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(params.text(p.name), ec))
+      throw network::ConfigError(origin_of(scene, {"workload." + p.name}),
+                                 "workload." + p.name + ": no such file " + params.text(p.name) +
+                                     " (names are relative to the scene file)");
+  }
+}
+
+// Workloads that compute declare their arithmetic precision; the report says where the precision
+// came from, above all when nobody chose it.
+void precision_of(const Scene& scene, const workloads::WorkloadInfo& info,
+                  workloads::RunInputs& in) {
+  const workloads::ParamSpec* p = find_of_type(info, workloads::ParamType::precision);
+  if (!p) {
+    in.precision_source =
+        "the simulator's default; workload " + scene.workload_kind + " declares no precision";
+    return;
+  }
+  in.options.precision = *t800::parse_precision(scene.workload.text(p->name));
+  const auto& defaults = scene.workload_defaults;
+  const bool chosen = std::find(defaults.begin(), defaults.end(), p->name) == defaults.end();
+  in.precision_source = chosen ? "workload." + p->name
+                               : "the default of workload " + scene.workload_kind +
+                                     "; set workload." + p->name + " to choose";
+}
+
 }  // namespace
 
 workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
@@ -46,41 +76,28 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
   in.options.keep_intervals = keep_intervals;
   in.options.fidelity = scene.fidelity;
   in.options.checked = scene.run_time_checks;
-  // Workloads that compute declare their arithmetic precision; the scene loader has validated the
-  // choice. The report says where the precision came from, above all when nobody chose it.
-  const auto& defaults = scene.workload_defaults;
-  if (scene.workload.has("precision")) {
-    in.options.precision = *t800::parse_precision(scene.workload.text("precision"));
-    in.precision_source = std::find(defaults.begin(), defaults.end(), "precision") == defaults.end()
-                              ? "workload.precision"
-                              : "the default of workload " + scene.workload_kind +
-                                    "; set workload.precision to choose";
-  } else {
-    in.precision_source =
-        "the simulator's default; workload " + scene.workload_kind + " declares no precision";
-  }
   in.faults = scene.faults;
   in.kind = scene.workload_kind;
   in.params = scene.workload;
   in.placement = scene.placement;
-  // Files a workload names (robot, torque table, trajectory output) are relative to the scene that
-  // names them, like the scene's topology file.
-  const auto relative_to_scene = [&](const std::string& name) {
-    const std::filesystem::path path = scene.workload.text(name);
-    return path.is_absolute() ? path : std::filesystem::path(scene.file).parent_path() / path;
-  };
-  for (const char* file : {"torque_csv", "output_csv"})
-    if (scene.workload.has(file) && !scene.workload.text(file).empty())
-      in.params.set(file, relative_to_scene(file).string());
-  if (scene.workload.has("robot")) load_robot_of(scene, relative_to_scene("robot"), in);
+  // tools/ knows the parameters' types, never a workload's parameter names: the scene loader has
+  // validated each value and resolved file names against the scene.
+  const workloads::WorkloadInfo& info = *workloads::find_workload(scene.workload_kind);
+  precision_of(scene, info, in);
+  if (const workloads::ParamSpec* robot = find_of_type(info, workloads::ParamType::robot_file);
+      robot && !in.params.text(robot->name).empty())
+    load_robot_of(scene, "workload." + robot->name, in.params.text(robot->name), in);
+  check_files(scene, info, in.params);
   check_workload(scene, in);
-  if (in.params.has("output_csv")) {
-    try {
-      workloads::check_output_path(in.params.text("output_csv"), "workload.output_csv =");
-    } catch (const std::invalid_argument& e) {
-      throw network::ConfigError(origin_of(scene, {"workload.output_csv"}), e.what());
+  for (const workloads::ParamSpec& p : info.params)
+    if (p.type == workloads::ParamType::output_file) {
+      const std::string key = "workload." + p.name;
+      try {
+        workloads::check_output_path(in.params.text(p.name), key + " =");
+      } catch (const std::invalid_argument& e) {
+        throw network::ConfigError(origin_of(scene, {key}), e.what());
+      }
     }
-  }
   return in;
 }
 

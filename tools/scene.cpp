@@ -15,6 +15,7 @@
 #include "network/toml_limits.hpp"
 #include "network/toml_util.hpp"
 #include "network/topology_file.hpp"
+#include "t800/cost_model.hpp"
 #include "workloads/registry.hpp"
 
 namespace tools {
@@ -172,6 +173,8 @@ class SceneReader {
   void fidelity(Scene& scene) const;
   void compiler(Scene& scene) const;
   bool boolean(const toml::table& t, const std::string& key, bool fallback) const;
+  std::string scene_relative(const std::string& name) const;
+  workloads::ParamValue fallback(const workloads::ParamSpec& spec) const;
   workloads::ParamValue param(const workloads::ParamSpec& spec, const toml::node& value,
                               const network::Topology& topology) const;
 
@@ -397,6 +400,18 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
                         "' in the topology; processors are " + processor_names(topology));
       return s;
     }
+    case ParamType::input_file:
+    case ParamType::output_file:
+    case ParamType::robot_file:
+      if (!value.is_string()) wrong_type(value);
+      return scene_relative(*value.value<std::string>());
+    case ParamType::precision: {
+      if (!value.is_string()) wrong_type(value);
+      const std::string s = *value.value<std::string>();
+      if (!t800::parse_precision(s))
+        fail(value, key + " = \"" + s + "\" is not valid; choose one of real32, real64");
+      return s;
+    }
     case ParamType::real_list: {
       if (!value.is_array()) wrong_type(value);
       std::vector<double> list;
@@ -413,6 +428,20 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
     }
   }
   return {};
+}
+
+// A file a workload names is relative to the scene that names it, like the scene's topology file.
+// (Whether it is there is the run's inputs' question: tools/run_inputs.cpp.)
+std::string SceneReader::scene_relative(const std::string& name) const {
+  if (name.empty()) return name;  // none
+  fs::path resolved(name);
+  if (resolved.is_relative()) resolved = fs::path(file_).parent_path() / resolved;
+  return resolved.string();
+}
+
+workloads::ParamValue SceneReader::fallback(const workloads::ParamSpec& spec) const {
+  if (!is_file(spec.type)) return spec.default_value;
+  return scene_relative(std::get<std::string>(spec.default_value));
 }
 
 void SceneReader::workload(Scene& scene) const {
@@ -435,7 +464,7 @@ void SceneReader::workload(Scene& scene) const {
   for (const workloads::ParamSpec& spec : info->params) {
     const toml::node* value = t.get(spec.name);
     if (value) scene.origins["workload." + spec.name] = pos(*value);
-    scene.workload.set(spec.name, value ? param(spec, *value, scene.topology) : spec.default_value);
+    scene.workload.set(spec.name, value ? param(spec, *value, scene.topology) : fallback(spec));
     if (!value) scene.workload_defaults.push_back(spec.name);
   }
 }

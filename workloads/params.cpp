@@ -10,6 +10,12 @@ const ParamSpec* WorkloadInfo::find(const std::string& name) const {
   return nullptr;
 }
 
+const ParamSpec* find_of_type(const WorkloadInfo& info, ParamType type) {
+  for (const ParamSpec& p : info.params)
+    if (p.type == type) return &p;
+  return nullptr;
+}
+
 const ParamValue& Params::at(const std::string& name) const {
   auto it = values_.find(name);
   // A workload asking for a parameter it did not declare is a programming error, not a user error.
@@ -53,6 +59,14 @@ const char* to_string(ParamType type) {
       return "array of numbers";
     case ParamType::processor:
       return "processor name";
+    case ParamType::input_file:
+      return "input file";
+    case ParamType::output_file:
+      return "output file";
+    case ParamType::robot_file:
+      return "robot model file";
+    case ParamType::precision:
+      return "precision";
   }
   return "?";
 }

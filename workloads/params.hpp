@@ -16,7 +16,23 @@ using ParamValue = std::variant<bool, std::int64_t, double, std::string, std::ve
 
 // processor: the name of one of the network's processors (checked against the topology), or empty
 // for the workload's own choice.
-enum class ParamType { flag, integer, real, text, real_list, processor };
+// The file types are paths relative to the scene that names them (the run hands the workload the
+// resolved path; empty = none): an input_file must exist, an output_file must be writable before
+// anything runs, a robot_file is read as a robot model for the workload. precision (real32 or
+// real64) is the arithmetic of the workload's occam program and so of the machine that runs it.
+// A kind declares at most one robot_file and one precision.
+enum class ParamType {
+  flag,
+  integer,
+  real,
+  text,
+  real_list,
+  processor,
+  input_file,
+  output_file,
+  robot_file,
+  precision
+};
 
 struct ParamSpec {
   std::string name;
@@ -50,6 +66,13 @@ class Params {
   const ParamValue& at(const std::string& name) const;
   std::map<std::string, ParamValue> values_;
 };
+
+inline bool is_file(ParamType t) {
+  return t == ParamType::input_file || t == ParamType::output_file || t == ParamType::robot_file;
+}
+
+// The kind's parameter of this type (robot_file, precision: at most one), or null.
+const ParamSpec* find_of_type(const WorkloadInfo& info, ParamType type);
 
 // Human-readable type name ("integer", "real", ...), for error messages and help.
 const char* to_string(ParamType type);

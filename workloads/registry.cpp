@@ -39,6 +39,11 @@ void register_kind(WorkloadInfo info, WorkloadFactory make) {
     if (!names.insert(p.name).second)
       throw std::invalid_argument("workload kind " + info.kind + " declares parameter " + p.name +
                                   " twice");
+  for (ParamType once : {ParamType::robot_file, ParamType::precision})
+    if (std::count_if(info.params.begin(), info.params.end(),
+                      [once](const ParamSpec& p) { return p.type == once; }) > 1)
+      throw std::invalid_argument("workload kind " + info.kind + " declares more than one " +
+                                  to_string(once) + " parameter");
   if (!make) throw std::invalid_argument("workload kind " + info.kind + " has no factory");
   kinds().push_back({std::move(info), std::move(make)});
 }

@@ -34,6 +34,11 @@ using occam::declare;
 using occam::declare_each;
 using occam::declare_variable;
 using occam::seq;
+// Integer statements occam compiles around the REAL arithmetic, where the kernel has them:
+// integer<S>(IntegerStatement::test) for an IF on an integer (a hit's index, a flag),
+// integer<S>(IntegerStatement::move) for an integer assignment (hit := k).
+using IntegerStatement = t800::codegen::IntegerStatement;
+using occam::integer;
 // For the operation-mix level only (compute_cost = "mix"): REAL loads and stores the counting
 // scalar does not see, declared by the kernel (the code generator sees them in the recording).
 using dynamics::note_loads;

@@ -44,6 +44,9 @@ class Process {
   void compute(std::int64_t cycles, const std::string& label = {});
   void compute(const Mix& mix, const std::string& label = {});
   void compute(const Kernel& kernel, const std::string& label = {});
+  // What a kernel costs on this process's processor, in its cycles: what compute(kernel) takes
+  // when nothing interrupts it (a program reports or schedules by it).
+  std::int64_t cycles(const Kernel& kernel) const;
 
   // c ! v: returns when the value has been taken (a protocol's items one communication each).
   template <class P>

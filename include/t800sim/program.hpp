@@ -135,6 +135,9 @@ class Builder {
   std::vector<DeclaredCode> code_;
 };
 
+// A value of a report: a number, text, a list (ResultValue::list(), then push) or a record (set).
+using ResultValue = workloads::ResultValue;
+
 // What a program reports after its run, in the run's report (JSON and text) under `workload`.
 class Results {
  public:

@@ -49,10 +49,16 @@ template <class T>
 struct Block {};
 template <class... Items>
 struct Sequential {};  // Items; ...
-// One case of a variant protocol: its items (none for a bare tag).
+// protocol<P>: value_type (what a program sends and receives), bytes(v) (the bytes on the wire),
+// name() (as occam would write it), send/receive (the communications, in occam's order).
+template <class P, class Enable = void>
+struct protocol;
+
+// One case of a variant protocol: the values of its items (none for a bare tag), as a sequential
+// protocol of the same items holds them (a counted array's is a std::vector).
 template <class... Items>
 struct Case {
-  std::tuple<Items...> items;
+  std::tuple<typename protocol<Items>::value_type...> items;
   friend bool operator==(const Case& a, const Case& b) { return a.items == b.items; }
   friend bool operator!=(const Case& a, const Case& b) { return !(a == b); }
 };
@@ -94,11 +100,6 @@ const char* primitive_name() {
 }
 
 }  // namespace detail
-
-// protocol<P>: value_type (what a program sends and receives), bytes(v) (the bytes on the wire),
-// name() (as occam would write it), send/receive (the communications, in occam's order).
-template <class P, class Enable = void>
-struct protocol;
 
 template <class T>
 struct protocol<T, std::enable_if_t<detail::is_primitive<T>>> {

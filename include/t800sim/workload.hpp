@@ -55,6 +55,14 @@ Param text_param(std::string name, std::string fallback, std::string help,
 Param real_list_param(std::string name, std::vector<double> fallback, std::string help);
 // A processor of the network, by name; empty (the default) lets the program choose.
 Param processor_param(std::string name, std::string help);
+// The program's arithmetic, "real32" or "real64": the simulated processors compute at it and every
+// report states it (and whether it was chosen or the default).
+Param precision_param(std::string name, std::string fallback, std::string help);
+// Files, relative to the scene that names them; the program gets the resolved path, or "" for none.
+// An input file must exist when the scene is read; an output file must be writable before the
+// simulation starts.
+Param input_file_param(std::string name, std::string help);
+Param output_file_param(std::string name, std::string help);
 
 }  // namespace t800sim
 

@@ -78,7 +78,7 @@ T800SIM_WORKLOAD(livermore7) {
       "against INMOS's published MFLOPS",
       {integer_param("elements", 101, "loop length n (u has n + 6 elements)", 1, 1e6),
        integer_param("repeat", 1, "times the loop runs", 1, 1e6),
-       text_param("precision", "real32", "occam REAL32 or REAL64 arithmetic", {"real32", "real64"}),
+       precision_param("precision", "real32", "occam REAL32 or REAL64 arithmetic"),
        processor_param("processor", "the processor that runs it (default: the first)")},
       [](const Params& p, const Network& n) { return std::make_unique<Livermore7>(p, n); }};
 }

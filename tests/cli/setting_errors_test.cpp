@@ -167,3 +167,54 @@ TEST(PaperData, CountsAndPercentagesMustBeWhatTheySay) {
 }
 
 }  // namespace
+
+namespace {
+
+// A short trajectory whose robot is the shipped one; `workload` adds keys.
+std::string trajectory(const std::string& workload) {
+  return "[network]\ntopology = \"" + source("configs/topologies/trajectory-9-m3.toml") +
+         "\"\n[workload]\nkind = \"trajectory\"\nsteps = 1\nrobot = \"" +
+         source("configs/robots/stanford.toml") + "\"\n" + workload;
+}
+
+bool names(const network::ConfigError& e, const std::string& path, int line,
+           const std::string& part) {
+  return e.where().file == path && e.where().line == line &&
+         std::string(e.what()).find(part) != std::string::npos;
+}
+
+}  // namespace
+
+// Files a workload names are parameter types: an input file is looked for next to the scene and
+// must be there before anything runs; an output file must be writable before anything runs.
+TEST(ParameterTypes, AnInputFileIsRelativeToTheSceneAndMustExist) {
+  const std::string path = scene_file(trajectory("torque = \"csv\"\ntorque_csv = \"here.csv\"\n"));
+  fs::remove(fs::path(path).parent_path() / "here.csv");  // from an earlier run of this test
+  EXPECT_TRUE(names(error_of(path), path, 8, "no such file"));
+  // The same name, once the file is next to the scene, is found whatever the working directory.
+  fs::copy_file(source("configs/scenes/trajectory-torque.csv"),
+                fs::path(path).parent_path() / "here.csv", fs::copy_options::overwrite_existing);
+  const auto check = cli_test::run("check " + path + " 2>&1");
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+}
+
+TEST(ParameterTypes, AnOutputFileIsCheckedBeforeTheRun) {
+  const std::string path = scene_file(trajectory("output_csv = \"no/such/dir/out.csv\"\n"));
+  EXPECT_TRUE(names(error_of(path), path, 7, "output_csv"));
+}
+
+TEST(ParameterTypes, APrecisionIsOneOfTheTwoAndSetsTheMachine) {
+  const std::string path = scene_file(trajectory("precision = \"real16\"\n"));
+  try {
+    tools::load_scene(path);
+    FAIL() << "accepted";
+  } catch (const network::ConfigError& e) {
+    EXPECT_TRUE(names(e, path, 7, "choose one of real32, real64")) << e.what();
+  }
+  const auto chosen = tools::inputs_from(tools::load_scene(path, {"workload.precision=real64"}));
+  EXPECT_EQ(chosen.options.precision, t800::Precision::real64);
+  EXPECT_EQ(chosen.precision_source, "workload.precision");
+  const auto fallback = tools::inputs_from(tools::load_scene(scene_file(trajectory(""))));
+  EXPECT_EQ(fallback.options.precision, t800::Precision::real32);  // the trajectory's default
+  EXPECT_NE(fallback.precision_source.find("default of workload trajectory"), std::string::npos);
+}

@@ -5,6 +5,7 @@
 
 #include "network/config_error.hpp"
 #include "sdk_fixtures.hpp"
+#include "t800sim/workload.hpp"
 
 namespace {
 
@@ -153,3 +154,14 @@ TEST(SdkProgram, ScenePlacementMistakesNameTheSceneLine) {
 }
 
 }  // namespace
+
+TEST(SdkRegistration, AKindHasAtMostOnePrecision) {
+  EXPECT_THROW(t800sim::register_workload({"two-precisions",
+                                           "a kind that says twice what its arithmetic is",
+                                           {t800sim::precision_param("a", "real32", "one"),
+                                            t800sim::precision_param("b", "real64", "two")},
+                                           [](const t800sim::Params&, const t800sim::Network&) {
+                                             return std::unique_ptr<t800sim::Program>();
+                                           }}),
+               std::invalid_argument);
+}

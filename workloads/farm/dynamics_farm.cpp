@@ -180,7 +180,7 @@ const Registration registered_dynamics_farm{
     WorkloadInfo{"dynamics-farm",
      "one forward-dynamics evaluation (D, C, h of the robot) farmed from a master to workers",
      {
-         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+         {"robot", T::robot_file, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
           {}, {}, {}},
          {"model", T::text, std::string{"paper"},
           "\"paper\" (64 subtasks, joint-6 Coriolis terms dropped) or \"full\" (every non-zero term)", {}, {},
@@ -191,8 +191,7 @@ const Registration registered_dynamics_farm{
           {}, {}, {"static", "on-demand", "explicit"}},
          {"allocation", T::text, std::string{}, "explicit allocation: \"P1: D11 D12 h2; P2: C1_23 ...\"", {},
           {}, {}},
-         {"precision", T::text, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {},
-          {"real32", "real64"}},
+         {"precision", T::precision, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {}, {}},
          {"tp_window", T::text, std::string{"farm"},
           "what Tp covers: \"farm\" (first input sent to last result received) or \"evaluation\" (state "
           "received to D, C, c, h assembled, with the master's sin/cos and assembly)",

@@ -114,8 +114,7 @@ const Registration registered_elimination{
          {"m", T::integer, std::int64_t{0},
           "level-2 processors E1..Em used; 0 = all of the topology's (elimination-m<m>.toml has m)", 0, 64,
           {}},
-         {"precision", T::text, std::string{"real64"}, "occam REAL32 or REAL64 arithmetic", {}, {},
-          {"real32", "real64"}},
+         {"precision", T::precision, std::string{"real64"}, "occam REAL32 or REAL64 arithmetic", {}, {}, {}},
          {"pivoting", T::text, std::string{"simple"},
           "\"simple\" (the paper: interchange only when the pivot is unusable) or \"partial\" (largest in "
           "the column)",
@@ -150,7 +149,7 @@ const Registration registered_elimination{
           "the system: \"arm\" (D q'' = tau - c - h of the robot at q, qd, tau), \"random\" (n x n from "
           "seed) or \"given\" (workload.a, workload.b)",
           {}, {}, {"arm", "random", "given"}},
-         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+         {"robot", T::robot_file, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
           {}, {}, {}},
          {"model", T::text, std::string{"full"},
           "dynamics model for source = \"arm\": \"full\" or \"paper\" (64 subtasks)", {}, {},

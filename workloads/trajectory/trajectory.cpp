@@ -642,14 +642,13 @@ const Registration registered_trajectory{
      "forward dynamics end to end: the dynamics farm, the elimination pipeline and an integrator on the farm's "
      "master, step by step (workloads/trajectory/trajectory.hpp)",
      {
-         {"robot", T::text, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
+         {"robot", T::robot_file, std::string{"../robots/stanford.toml"}, "robot model file, relative to the scene",
           {}, {}, {}},
          {"model", T::text, std::string{"full"},
           "dynamics model: \"full\" (every non-zero term) or \"paper\" (64 subtasks, joint-6 Coriolis terms "
           "dropped)",
           {}, {}, {"paper", "full"}},
-         {"precision", T::text, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {},
-          {"real32", "real64"}},
+         {"precision", T::precision, std::string{"real32"}, "occam REAL32 or REAL64 arithmetic", {}, {}, {}},
          {"m", T::integer, std::int64_t{3}, "level-2 processors E1..Em of the pipeline", 1, 64, {}},
          {"pivoting", T::text, std::string{"simple"},
           "\"simple\" (the paper: interchange only when the pivot is unusable) or \"partial\"", {}, {},
@@ -664,7 +663,7 @@ const Registration registered_trajectory{
          {"torque", T::text, std::string{"zero"},
           "\"zero\" (passive), \"csv\" (workload.torque_csv) or \"pd\" (kp, kd to target)", {}, {},
           {"zero", "csv", "pd"}},
-         {"torque_csv", T::text, std::string{},
+         {"torque_csv", T::input_file, std::string{},
           "torque table, relative to the scene: header t,tau1,...,tau6, then rows with t increasing", {}, {}, {}},
          {"interpolation", T::text, std::string{"linear"},
           "torque table between rows: \"linear\" or \"hold\" (zero-order hold); held beyond its ends", {}, {},
@@ -677,7 +676,7 @@ const Registration registered_trajectory{
          {"qd", T::real_list, std::vector<double>{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, "initial joint rates", {}, {}, {}},
          {"stop_at_limits", T::flag, false,
           "stop at the first step that leaves the joint limits (reported either way, never clamped)", {}, {}, {}},
-         {"output_csv", T::text, std::string{},
+         {"output_csv", T::output_file, std::string{},
           "trajectory CSV (t, q, qd, tau, step_us and its split), relative to the scene; empty = none", {}, {}, {}},
      }},
     make_trajectory};
