@@ -48,12 +48,18 @@ Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, Proces
   }
 }
 
-void Link::transmit(int from, Message message) {
+std::int64_t Link::submit(int from, Message message) {
   Direction& d = dir_[from];
   const std::int64_t ticket = ++d.submitted;
   d.queue.push_back(std::move(message));
   d.wire_wake.notify(SC_ZERO_TIME);
   d.submitted_event.notify(SC_ZERO_TIME);
+  return ticket;
+}
+
+void Link::transmit(int from, Message message) {
+  Direction& d = dir_[from];
+  const std::int64_t ticket = submit(from, std::move(message));
   while (d.completed < ticket) sc_core::wait(d.sent_event);
 }
 
@@ -552,10 +558,7 @@ void Link::apply_byte_fault(int di) {
 
 bool Link::transmit(int from, Message message, const sc_time& deadline) {
   Direction& d = dir_[from];
-  const std::int64_t ticket = ++d.submitted;
-  d.queue.push_back(std::move(message));
-  d.wire_wake.notify(SC_ZERO_TIME);
-  d.submitted_event.notify(SC_ZERO_TIME);
+  const std::int64_t ticket = submit(from, std::move(message));
   while (d.completed < ticket) {
     if (sc_time_stamp() >= deadline) {
       reset_output(from);

@@ -197,6 +197,7 @@ class Link : public sc_core::sc_module {
   void complete_receive(int d);
   void count_receiver(int d);
   ProcessorActivity* end(int e) { return end_[e]; }
+  std::int64_t submit(int from, Message message);  // queues it; its ticket
   void arm_input(int d);
   // faults and resets
   void arm_fault();

@@ -39,6 +39,14 @@ FaultSpec link_fault(FaultSpec::Kind kind, double at_us, int mask = 1) {
   return f;
 }
 
+FaultSpec halt_fault(const char* processor, double at_us) {
+  FaultSpec f;
+  f.kind = FaultSpec::Kind::halt;
+  f.processor = processor;
+  f.at_us = at_us;
+  return f;
+}
+
 TEST(FaultModel, ACorruptedByteChangesTheValueTheReceiverReads) {
   register_word();
   Machine m(core_test::chain(1), core_test::options(20));
@@ -101,11 +109,7 @@ TEST(FaultModel, ADeadLinkCarriesWhatWasSentBeforeItsTimeAndNothingAfter) {
 
 TEST(FaultModel, AHaltedProcessorStopsComputingAtItsTime) {
   Machine m(core_test::chain(1), core_test::options(20));
-  FaultSpec halt;
-  halt.kind = FaultSpec::Kind::halt;
-  halt.processor = "P0";
-  halt.at_us = 100;
-  m.faults().add(halt);
+  m.faults().add(halt_fault("P0", 100));
   network::arm_faults(m);
   m.spawn(0, "worker", Priority::low, [](Process& p) { p.compute(1000000, "long"); });
   const auto blocked = m.run();
@@ -117,11 +121,7 @@ TEST(FaultModel, AHaltedProcessorStopsComputingAtItsTime) {
 
 TEST(FaultModel, OutputOrFailAndInputOrFailGiveUpAtTheirDeadline) {
   Machine m(core_test::chain(1), core_test::options(20));
-  FaultSpec halt;
-  halt.kind = FaultSpec::Kind::halt;
-  halt.processor = "P1";
-  halt.at_us = 0;
-  m.faults().add(halt);
+  m.faults().add(halt_fault("P1", 0));
   network::arm_faults(m);
   auto& out = m.channel("out", 0, 1);
   auto& in = m.channel("in", 1, 0);

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 #include "workloads/setting_error.hpp"
 
@@ -1165,22 +1166,18 @@ class PipelineProgram<T>::Levels {
       values[i] = C(flip_byte(values[i].value(), byte % size, mask));
       return true;
     };
-    t800::register_payload_bytes(typeid(RowMessage),
-                                 [=](std::any& a, std::int64_t b, std::uint8_t x) {
-                                   auto& m = std::any_cast<RowMessage&>(a);
-                                   if (b >= kHeaderBytes)
-                                     return flip_reals(m.values, b - kHeaderBytes, x);
-                                   m.index = std::size_t(flip_byte(std::uint32_t(m.index), b, x));
-                                   return true;
-                                 });
-    t800::register_payload_bytes(typeid(ReturnedRow),
-                                 [=](std::any& a, std::int64_t b, std::uint8_t x) {
-                                   auto& m = std::any_cast<ReturnedRow&>(a);
-                                   if (b >= kHeaderBytes)
-                                     return flip_reals(m.values, b - kHeaderBytes, x);
-                                   m.index = std::size_t(flip_byte(std::uint32_t(m.index), b, x));
-                                   return true;
-                                 });
+    // A row: its number in the header word, then its REALs.
+    auto row_flip = [=](auto* type) {
+      using Message = std::remove_pointer_t<decltype(type)>;
+      return [=](std::any& a, std::int64_t b, std::uint8_t x) {
+        auto& m = std::any_cast<Message&>(a);
+        if (b >= kHeaderBytes) return flip_reals(m.values, b - kHeaderBytes, x);
+        m.index = std::size_t(flip_byte(std::uint32_t(m.index), b, x));
+        return true;
+      };
+    };
+    t800::register_payload_bytes(typeid(RowMessage), row_flip(static_cast<RowMessage*>(nullptr)));
+    t800::register_payload_bytes(typeid(ReturnedRow), row_flip(static_cast<ReturnedRow*>(nullptr)));
     t800::register_payload_bytes(
         typeid(PivotMessage), [=](std::any& a, std::int64_t b, std::uint8_t x) {
           auto& m = std::any_cast<PivotMessage&>(a);
