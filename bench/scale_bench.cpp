@@ -3,7 +3,9 @@
 // `t800sim run configs/scenes/dynamics-farm.toml --set network.family=F --set network.workers=N-1
 // --json` whose peak resident memory (ru_maxrss from wait4) is measured. Memory per transputer is
 // the slope between the smallest and the largest network of a family, so the fixed cost of the
-// program (SystemC, the libraries, the robot model) drops out.
+// program (SystemC, the libraries, the robot model) drops out. Also printed: the child's wall time
+// and the report's elaboration_s (set-up before simulating), for the scaling curve against N (issue
+// 14).
 #include <sys/wait.h>
 
 #include <iostream>
@@ -28,7 +30,7 @@ struct Options {
 
 struct Run {
   int transputers = 0;
-  double peak_kib = 0, wall_s = 0, tp_ms = 0;
+  double peak_kib = 0, wall_s = 0, elaboration_s = 0, tp_ms = 0;
 };
 
 Run run(const std::string& exe, const std::string& scene, const std::string& family,
@@ -45,21 +47,23 @@ Run run(const std::string& exe, const std::string& scene, const std::string& fam
   if (report["processors"].size() != std::size_t(transputers))
     throw std::runtime_error(
         fmt::format("{}: expected {} processors in the report", family, transputers));
-  return {transputers, double(c.maxrss_kib), c.wall_s, report["workload"]["tp_ms"].get<double>()};
+  return {transputers, double(c.maxrss_kib), c.wall_s, report["elaboration_s"].get<double>(),
+          report["workload"]["tp_ms"].get<double>()};
 }
 
 int measure(const Options& o) {
   const std::string exe = benchmarks::find_t800sim(o.t800sim);
   const std::string scene = tools::find_repository_file("configs/scenes/dynamics-farm.toml");
-  std::cout << fmt::format("{:<10} {:>12} {:>10} {:>8} {:>10}\n", "family", "transputers",
-                           "peak_MiB", "wall_s", "Tp_ms");
+  std::cout << fmt::format("{:<10} {:>12} {:>10} {:>8} {:>8} {:>10}\n", "family", "transputers",
+                           "peak_MiB", "wall_s", "elab_s", "Tp_ms");
   for (const std::string& family : o.families) {
     std::vector<Run> runs;
     for (int n : o.sizes) {
       runs.push_back(run(exe, scene, family, n));
       const Run& r = runs.back();
-      std::cout << fmt::format("{:<10} {:>12} {:>10.1f} {:>8.2f} {:>10.4f}\n", family,
-                               r.transputers, r.peak_kib / 1024.0, r.wall_s, r.tp_ms)
+      std::cout << fmt::format("{:<10} {:>12} {:>10.1f} {:>8.3f} {:>8.3f} {:>10.4f}\n", family,
+                               r.transputers, r.peak_kib / 1024.0, r.wall_s, r.elaboration_s,
+                               r.tp_ms)
                 << std::flush;
     }
     const Run &small = runs.front(), &large = runs.back();

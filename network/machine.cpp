@@ -29,15 +29,18 @@ void run_body(Process* p, Process::Body body) {
 }  // namespace
 
 Machine::Machine(const Topology& topology, const MachineOptions& options)
-    : topology_(topology), options_(options) {
+    : topology_(topology), routes_(topology_), options_(options) {
+  const auto code = std::make_shared<t800::CodeCache>();  // a kernel compiled once for all
   for (const ProcessorSpec& spec : topology_.processors) {
     transputers_.push_back(
         std::make_unique<t800::Transputer>(module_name(spec.name).c_str(), spec.config));
     transputers_.back()->activity().keep_intervals(options.keep_intervals);
     transputers_.back()->cpu().set_fidelity(options.fidelity.compute);
     compute_models_.emplace_back(
-        spec.config, t800::ComputeSettings{options.precision, options.code_efficiency,
-                                           options.fidelity.compute_cost, options.checked});
+        spec.config,
+        t800::ComputeSettings{options.precision, options.code_efficiency,
+                              options.fidelity.compute_cost, options.checked},
+        code);
   }
   elaborate_links();
 }
@@ -82,12 +85,24 @@ void Machine::elaborate_links() {
   }
 }
 
+// Connection i is link_modules_[i]; the host's link comes after the connections.
 std::optional<std::pair<t800::Link*, int>> Machine::link_between(int a, int b) const {
-  for (const LinkInfo& l : links_) {
-    if (l.node[0] == a && l.node[1] == b) return std::make_pair(l.link, 0);
-    if (l.node[1] == a && l.node[0] == b) return std::make_pair(l.link, 1);
+  if (a == kHost || b == kHost) {
+    if (!topology_.host || (a == kHost) == (b == kHost)) return std::nullopt;
+    const LinkInfo& host = links_.back();
+    if (host.node[0] == a && host.node[1] == b) return std::make_pair(host.link, 0);
+    if (host.node[1] == a && host.node[0] == b) return std::make_pair(host.link, 1);
+    return std::nullopt;
   }
-  return std::nullopt;
+  const LinkIndex& index = routes_.index();
+  int first = -1;
+  for (int link = 0; link < kLinksPerProcessor; ++link) {
+    const int c = index.connection_at(a, link);
+    if (c >= 0 && index.peer(a, link).processor == b && (first < 0 || c < first)) first = c;
+  }
+  if (first < 0) return std::nullopt;
+  const LinkInfo& l = links_[std::size_t(first)];
+  return std::make_pair(l.link, l.node[0] == a ? 0 : 1);
 }
 
 std::vector<int> Machine::route(int from, int to) const {
@@ -95,8 +110,8 @@ std::vector<int> Machine::route(int from, int to) const {
   if (from == to) return {from};
   if (from == kHost || to == kHost) {
     if (host_proc < 0) return {};
-    std::vector<int> inner = from == kHost ? topology_.shortest_path(host_proc, to)
-                                           : topology_.shortest_path(from, host_proc);
+    std::vector<int> inner =
+        from == kHost ? routes_.path(host_proc, to) : routes_.path(from, host_proc);
     if (inner.empty()) return {};
     if (from == kHost)
       inner.insert(inner.begin(), kHost);
@@ -104,7 +119,7 @@ std::vector<int> Machine::route(int from, int to) const {
       inner.push_back(kHost);
     return inner;
   }
-  return topology_.shortest_path(from, to);
+  return routes_.path(from, to);
 }
 
 Channel& Machine::channel(const std::string& name, int from, int to) {
@@ -287,6 +302,8 @@ std::vector<BlockedProcess> Machine::run() {
     handles_.push_back(sc_core::sc_spawn([p = pending.first, body = pending.second] { run_body(p, body); },
                                          sc_core::sc_gen_unique_name("proc")));
   pending_.clear();
+  elaboration_s_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
   if (options_.max_sim_s > 0 || options_.max_wall_s > 0)
     run_with_limits();
   else

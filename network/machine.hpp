@@ -6,6 +6,7 @@
 // SystemC cannot be restarted (docs/architecture.md).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -18,6 +19,7 @@
 #include "network/faults.hpp"
 #include "network/fidelity.hpp"
 #include "network/process.hpp"
+#include "network/routes.hpp"
 #include "network/topology.hpp"
 #include "t800/compute_model.hpp"
 #include "t800/transputer.hpp"
@@ -102,10 +104,16 @@ class Machine {
   const std::vector<std::unique_ptr<Channel>>& channels() const { return channels_; }
   double simulated_us() const { return end_us_; }
   std::uint64_t events() const { return events_; }  // SystemC delta cycles of the run
+  // Host seconds from this machine's construction to the start of the simulation: the network, the
+  // workload's processes and channels, routes, memory (set by run()).
+  double elaboration_s() const { return elaboration_s_; }
 
-  // The link from node a to its neighbour b, and a's end of it; nullopt when they are not
-  // neighbours.
+  // The link from node a to its neighbour b, and a's end of it (of several, the first connection
+  // listed); nullopt when they are not neighbours.
   std::optional<std::pair<t800::Link*, int>> link_between(int a, int b) const;
+  // The nodes a channel from -> to passes (both included; the host is kHost): a shortest path,
+  // lowest link first (network/routes.hpp). Empty when there is none.
+  std::vector<int> route(int from, int to) const;
   // The processes running on nodes, for reports.
   const std::vector<std::unique_ptr<Process>>& processes() const { return processes_; }
   // The faults injected into this run and what each did (network/faults.hpp).
@@ -117,9 +125,9 @@ class Machine {
   void finalise_channels();
   void place_memory();
   void start_router(int node, int from, t800::Link& link, int end);
-  std::vector<int> route(int from, int to) const;
 
   Topology topology_;
+  Routes routes_;
   MachineOptions options_;
   std::vector<std::unique_ptr<t800::Transputer>> transputers_;
   std::vector<t800::ComputeModel> compute_models_;
@@ -148,6 +156,8 @@ class Machine {
   bool finalised_ = false;
   double end_us_ = 0;
   std::uint64_t events_ = 0;
+  std::chrono::steady_clock::time_point created_ = std::chrono::steady_clock::now();
+  double elaboration_s_ = 0;
   Limit limit_ = Limit::none;
   std::vector<std::string> wait_cycle_;
   FaultLog faults_;

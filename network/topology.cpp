@@ -1,9 +1,12 @@
 #include "network/topology.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
-#include <queue>
 #include <utility>
+
+#include "network/link_index.hpp"
+#include "network/routes.hpp"
 
 #include "t800/processor_config.hpp"
 
@@ -27,40 +30,22 @@ LinkEnd Topology::peer(int processor, int link) const {
   return c.a == LinkEnd{processor, link} ? c.b : c.a;
 }
 
+// One reading of the list (the first connection listed at each of p's links), not one per link.
 std::vector<int> Topology::neighbours(int p) const {
+  int far[kLinksPerProcessor] = {-1, -1, -1, -1};
+  for (const Connection& c : connections)
+    for (const auto& [end, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
+      if (end.processor == p && end.link >= 0 && end.link < kLinksPerProcessor && far[end.link] < 0)
+        far[end.link] = other.processor;
   std::vector<int> result;
-  for (int link = 0; link < kLinksPerProcessor; ++link) {
-    if (connection_at(p, link) < 0) continue;
-    const int q = peer(p, link).processor;
-    // Two links between the same pair (a ring of two) still make one neighbour.
-    bool seen = false;
-    for (int r : result) seen = seen || r == q;
-    if (!seen) result.push_back(q);
-  }
+  for (int q :
+       far)  // link order; two links between the same pair (a ring of two) make one neighbour
+    if (q >= 0 && std::find(result.begin(), result.end(), q) == result.end()) result.push_back(q);
   return result;
 }
 
 std::vector<int> Topology::shortest_path(int from, int to) const {
-  const int n = static_cast<int>(processors.size());
-  if (from < 0 || to < 0 || from >= n || to >= n) return {};
-  // Breadth-first search; neighbours() is in link order, so ties go to the lowest link.
-  std::vector<int> parent(static_cast<std::size_t>(n), -2);
-  parent[static_cast<std::size_t>(from)] = -1;
-  std::queue<int> frontier;
-  frontier.push(from);
-  while (!frontier.empty() && parent[static_cast<std::size_t>(to)] == -2) {
-    const int p = frontier.front();
-    frontier.pop();
-    for (int q : neighbours(p)) {
-      if (parent[static_cast<std::size_t>(q)] != -2) continue;
-      parent[static_cast<std::size_t>(q)] = p;
-      frontier.push(q);
-    }
-  }
-  if (parent[static_cast<std::size_t>(to)] == -2) return {};
-  std::vector<int> path;
-  for (int p = to; p != -1; p = parent[static_cast<std::size_t>(p)]) path.insert(path.begin(), p);
-  return path;
+  return Routes(*this).path(from, to);
 }
 
 namespace {
@@ -148,13 +133,14 @@ void check_ends_unique(const Topology& t) {
 }
 
 std::vector<bool> reachable_from(const Topology& t, int start) {
+  const LinkIndex index(t);
   std::vector<bool> reached(t.processors.size(), false);
   std::vector<int> stack{start};
   reached[static_cast<std::size_t>(start)] = true;
   while (!stack.empty()) {
     const int p = stack.back();
     stack.pop_back();
-    for (int q : t.neighbours(p)) {
+    for (int q : index.neighbours(p)) {
       if (reached[static_cast<std::size_t>(q)]) continue;
       reached[static_cast<std::size_t>(q)] = true;
       stack.push_back(q);

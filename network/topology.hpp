@@ -45,10 +45,12 @@ struct Topology {
   int connection_at(int processor, int link) const;
   // The far end of the connection at (processor, link); requires connection_at(...) >= 0.
   LinkEnd peer(int processor, int link) const;
-  // Processor indices adjacent to p, in link order.
+  // Processor indices adjacent to p, in link order. (Each call reads the connection list: code
+  // that asks often keeps a network::LinkIndex.)
   std::vector<int> neighbours(int p) const;
-  // A shortest path from -> to as processor indices (both included); deterministic (lowest link first).
-  // Empty when unreachable.
+  // A shortest path from -> to as processor indices (both included); deterministic (lowest link
+  // first, network/routes.hpp). Empty when unreachable. (Code that asks often keeps a
+  // network::Routes.)
   std::vector<int> shortest_path(int from, int to) const;
   // The processor wired to the host, or -1.
   int host_processor() const { return host ? host->processor : -1; }

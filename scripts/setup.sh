@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake pkg-config libsystemc-dev libeigen3-dev libfmt-dev googletest libgtest-dev
           libtomlplusplus-dev libcli11-dev liborocos-kdl-dev nlohmann-json3-dev
           python3 python3-matplotlib parallel)  # tools/plot; sweep jobs through GNU parallel (tests)
+# Optional, not installed here: libsimgrid-dev (bench/simgrid_bench's SimGrid side), clang (fuzz/).
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,6 +1,9 @@
 #include "t800/activity.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+
+#include "t800/repeated_sum.hpp"
 
 namespace t800 {
 
@@ -96,6 +99,13 @@ void LinkActivity::packet(const sc_core::sc_time& start, const sc_core::sc_time&
       intervals_.push_back({s, s + d, 1, data ? "data" : "ack"});
     }
   }
+}
+
+void LinkActivity::packets(std::int64_t count, const sc_core::sc_time& duration) {
+  if (keep_intervals_)
+    throw std::logic_error(
+        "LinkActivity::packets: intervals are kept, so every packet needs its time");
+  busy_us_ = add_repeatedly(busy_us_, duration.to_seconds() * 1e6, count);
 }
 
 void LinkActivity::message_done(std::int64_t bytes, const std::string& label) {

@@ -1,8 +1,8 @@
 // Per-processor and per-link accounting of time. A processor is, at each instant, computing (its
 // CPU runs a compute block), communicating (its CPU runs communication instructions, or one of its
 // link engines moves a message for one of its processes) or idle. Totals are always kept; intervals
-// only when a trace asks for them (docs/architecture.md: "when no trace is asked for, nothing per-interval is
-// stored").
+// only when a trace asks for them (docs/architecture.md: "when no trace is asked for, nothing
+// per-interval is stored").
 #pragma once
 
 #include <cstdint>
@@ -69,10 +69,15 @@ class ProcessorActivity {
 class LinkActivity {
  public:
   void packet(const sc_core::sc_time& start, const sc_core::sc_time& duration, bool data);
+  // `count` packets of one duration, where no intervals are kept (so their times do not matter):
+  // the busy time of `count` calls of packet(), to the bit, at the cost of one (a closed-form
+  // message, t800/link.hpp).
+  void packets(std::int64_t count, const sc_core::sc_time& duration);
   // Kept intervals with this message's data (since the previous message) take its label, for
   // traces.
   void message_done(std::int64_t bytes, const std::string& label);
   void keep_intervals(bool keep) { keep_intervals_ = keep; }
+  bool keeps_intervals() const { return keep_intervals_; }
   // Kept intervals join packets less than `gap` apart, so a streaming message is one interval, not
   // one per packet (a long trajectory has tens of thousands of packets per step). A trace's link
   // intervals therefore span the short gaps between a message's packets; busy_us() counts the

@@ -4,11 +4,13 @@
 
 namespace t800 {
 
-ComputeModel::ComputeModel(const ProcessorConfig& config, const ComputeSettings& settings)
+ComputeModel::ComputeModel(const ProcessorConfig& config, const ComputeSettings& settings,
+                           std::shared_ptr<CodeCache> code)
     : config_(config),
       processor_(processor_model(config.type)),
       settings_(settings),
-      mix_(config, settings.precision, settings.code_efficiency) {}
+      mix_(config, settings.precision, settings.code_efficiency),
+      code_(code ? std::move(code) : std::make_shared<CodeCache>()) {}
 
 void ComputeModel::set_memory(MemoryMap map) {
   memory_ = std::move(map);
@@ -31,13 +33,13 @@ ComputeModel::Compiled& ComputeModel::compiled(
     const std::shared_ptr<const codegen::Recording>& kernel) const {
   auto found = compiled_.find(kernel.get());
   if (found != compiled_.end()) return found->second;
-  Compiled c{kernel, codegen::generate(*kernel, target()), -1};
-  return compiled_.emplace(kernel.get(), std::move(c)).first->second;
+  return compiled_.emplace(kernel.get(), Compiled{&code_->unit(kernel, target()), -1})
+      .first->second;
 }
 
 const codegen::CodeUnit& ComputeModel::code(
     const std::shared_ptr<const codegen::Recording>& kernel) const {
-  return compiled(kernel).unit;
+  return *compiled(kernel).unit;
 }
 
 MemoryView ComputeModel::memory_view(const codegen::CodeUnit& unit) const {
@@ -59,7 +61,7 @@ std::int64_t ComputeModel::cycles(const ComputeWork& work) const {
   Compiled& c = compiled(work.code);
   if (c.cycles < 0)
     c.cycles =
-        std::int64_t(std::ceil(double(time(c.unit).cycles) * settings_.code_efficiency - 1e-9));
+        std::int64_t(std::ceil(double(time(*c.unit).cycles) * settings_.code_efficiency - 1e-9));
   return c.cycles;
 }
 

@@ -9,6 +9,7 @@
 #include <memory>
 #include <unordered_map>
 
+#include "t800/code_cache.hpp"
 #include "t800/codegen/code_unit.hpp"
 #include "t800/codegen/generator.hpp"
 #include "t800/compute_work.hpp"
@@ -30,7 +31,9 @@ struct ComputeSettings {
 
 class ComputeModel {
  public:
-  ComputeModel(const ProcessorConfig& config, const ComputeSettings& settings);
+  // `code`: compiled code shared with other processors (a machine's); by default its own.
+  ComputeModel(const ProcessorConfig& config, const ComputeSettings& settings,
+               std::shared_ptr<CodeCache> code = nullptr);
 
   std::int64_t cycles(const ComputeWork& work) const;
   // One channel communication as occam compiles it (docs/t800-timing.md, "Communication and
@@ -60,8 +63,7 @@ class ComputeModel {
 
  private:
   struct Compiled {
-    std::shared_ptr<const codegen::Recording> kernel;  // kept alive: the cache is keyed by it
-    codegen::CodeUnit unit;
+    const codegen::CodeUnit* unit = nullptr;  // in code_
     std::int64_t cycles = -1;  // -1: not timed yet (timing needs the memory map)
   };
   Compiled& compiled(const std::shared_ptr<const codegen::Recording>& kernel) const;
@@ -71,6 +73,8 @@ class ComputeModel {
   ComputeSettings settings_;
   CostModel mix_;
   MemoryMap memory_;
+  std::shared_ptr<CodeCache> code_;
+  // By kernel; code_ keeps each kernel alive, so the keys stay unique.
   mutable std::unordered_map<const codegen::Recording*, Compiled> compiled_;
   mutable std::unordered_map<std::int64_t, std::int64_t> communication_;  // by signed length
 };

@@ -405,12 +405,21 @@ void Link::closed_form_sender_done(int di) {
   d.process_event.notify(process_delay_);
 }
 
+// Busy time is a sum over the packets, whatever their times; only a trace needs each packet placed.
 void Link::record_closed_form_packets(int di, std::int64_t data_packets, std::int64_t ack_packets) {
   const ClosedForm& cf = dir_[di].closed_form;
-  for (std::int64_t k = 1; k <= data_packets; ++k)
-    dir_[di].activity.packet(byte_start(cf, k), data_packet_, true);
-  for (std::int64_t k = 1; k <= ack_packets; ++k)
-    dir_[1 - di].activity.packet(ack_start(cf, k), ack_packet_, false);
+  LinkActivity& data = dir_[di].activity;
+  LinkActivity& acks = dir_[1 - di].activity;
+  if (!data.keeps_intervals())
+    data.packets(data_packets, data_packet_);
+  else
+    for (std::int64_t k = 1; k <= data_packets; ++k)
+      data.packet(byte_start(cf, k), data_packet_, true);
+  if (!acks.keeps_intervals())
+    acks.packets(ack_packets, ack_packet_);
+  else
+    for (std::int64_t k = 1; k <= ack_packets; ++k)
+      acks.packet(ack_start(cf, k), ack_packet_, false);
 }
 
 // The other direction has started: the state the packet level would be in now, worked out from the

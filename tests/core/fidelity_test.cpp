@@ -179,6 +179,22 @@ TEST(Fidelity, MessageAndAutoEqualPacketOnAOneWayLink) {
         }
 }
 
+// A closed form does not record its packets one by one (unless a trace needs their times): its
+// busy time and DMA cycles are derived. They must equal the packet level's sums exactly -- the same
+// doubles, the same cycles -- for messages of every size.
+TEST(Fidelity, ClosedFormBusyTimeAndDmaCyclesEqualThePacketLevelsSums) {
+  for (std::int64_t bytes : {1, 2, 64, 4096})
+    for (int receiver_delay : {0, 200}) {
+      Exchange e{20, LinkProtocol::overlapped, bytes, 0, receiver_delay, -1, 3};
+      const Values packet = in_child([&] { return exchange(e, LinkFidelity::packet); });
+      const Values closed = in_child([&] { return exchange(e, LinkFidelity::message); });
+      ASSERT_EQ(closed[13], 3) << "every message should run in closed form";
+      for (int d = 0; d < 2; ++d)
+        EXPECT_EQ(closed[9 + d], packet[9 + d]) << bytes << " bytes: busy time of direction " << d;
+      EXPECT_EQ(closed[15], packet[15]) << bytes << " bytes: DMA cycles stolen on P1";
+    }
+}
+
 // Both directions streaming: the acknowledges wait behind the other direction's data, which the
 // closed form does not see -- `message` is faster than the truth, `automatic` is the truth.
 TEST(Fidelity, MessageLevelIgnoresContentionAutoDoesNot) {

@@ -102,4 +102,29 @@ TEST(Deadlock, IsReportedWithTheBlockedProcess) {
   EXPECT_NE(blocked[0].status.find("never"), std::string::npos);
 }
 
+// The link between two nodes is the first listed in the machine's links that joins them (a's end of
+// it), found here by reading the list; Machine::link_between answers from an index of link ends.
+// Two links join P0 and P1, the first listed on P0's higher link; the host is on P0.link0.
+TEST(LinkBetween, IsTheFirstListedLinkJoiningTheNodes) {
+  network::Topology t;
+  for (int i = 0; i < 3; ++i) t.processors.push_back({"P" + std::to_string(i), {}, {}});
+  t.connections.push_back({{0, 3}, {1, 1}, std::nullopt, {}});
+  t.connections.push_back({{0, 1}, {1, 2}, std::nullopt, {}});
+  t.connections.push_back({{2, 0}, {1, 3}, std::nullopt, {}});
+  t.host = network::LinkEnd{0, 0};
+  const network::Machine m(t, core_test::options(kMbps));
+  const std::vector<int> nodes{network::Machine::kHost, 0, 1, 2};
+  for (int a : nodes)
+    for (int b : nodes) {
+      std::optional<std::pair<t800::Link*, int>> listed;
+      for (const network::Machine::LinkInfo& l : m.links()) {
+        if (listed) break;
+        if (l.node[0] == a && l.node[1] == b) listed = std::make_pair(l.link, 0);
+        if (l.node[1] == a && l.node[0] == b) listed = std::make_pair(l.link, 1);
+      }
+      EXPECT_EQ(m.link_between(a, b), listed) << a << " -> " << b;
+    }
+  EXPECT_EQ(m.link_between(0, 1)->first, m.links()[0].link);  // the first listed, not link 1's
+}
+
 }  // namespace

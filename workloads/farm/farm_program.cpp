@@ -118,7 +118,7 @@ Allocation FarmProgram<S>::allocate(const network::Machine& m) const {
   for (const FarmTask& t : work_.tasks) task_ns.push_back(double(t.cycles) * cycle_ns);
   std::vector<WorkerCosts> costs;
   for (int w : workers_) {
-    const double hops = double(m.topology().shortest_path(master_, w).size() - 1);
+    const double hops = double(m.route(master_, w).size() - 1);
     costs.push_back({hops * (link.arrival_ns(input_bytes) + hop_overhead),
                      hops * kReal * link.byte_period_ns,
                      hops * (link.data_packet_ns + hop_overhead)});

@@ -198,6 +198,7 @@ RunReport run(const RunInputs& in) {
   report.limit = machine.limit_reached();
   report.simulated_us = machine.simulated_us();
   report.events = machine.events();
+  report.elaboration_s = machine.elaboration_s();
   report.processors = processor_reports(machine, report.simulated_us);
   report.links = link_reports(machine, report.simulated_us);
   if (in.options.keep_intervals) report.tracks = trace_tracks(machine, report);
@@ -218,6 +219,7 @@ ResultValue RunReport::to_value() const {
   v.set("scene", name);
   v.set("simulated_us", simulated_us);
   v.set("wall_s", wall_s);
+  v.set("elaboration_s", elaboration_s);
   v.set("events", std::int64_t(events));
   v.set("setting", setting_value(setting));
   ResultValue f;

@@ -75,6 +75,7 @@ struct RunReport {
   std::string name;
   double simulated_us = 0;
   double wall_s = 0;
+  double elaboration_s = 0;  // of wall_s, the set-up before simulating (Machine::elaboration_s)
   RunSetting setting;
   network::Fidelity fidelity;   // what the run modelled and skipped
   bool run_time_checks = true;  // compiled into the generated code
