@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "network/channel.hpp"
+#include "network/faults.hpp"
 #include "network/fidelity.hpp"
 #include "network/process.hpp"
 #include "network/routes.hpp"
@@ -115,6 +116,9 @@ class Machine {
   std::vector<int> route(int from, int to) const;
   // The processes running on nodes, for reports.
   const std::vector<std::unique_ptr<Process>>& processes() const { return processes_; }
+  // The faults injected into this run and what each did (network/faults.hpp).
+  FaultLog& faults() { return faults_; }
+  const FaultLog& faults() const { return faults_; }
 
  private:
   void elaborate_links();
@@ -156,6 +160,7 @@ class Machine {
   double elaboration_s_ = 0;
   Limit limit_ = Limit::none;
   std::vector<std::string> wait_cycle_;
+  FaultLog faults_;
 };
 
 }  // namespace network

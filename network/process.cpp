@@ -146,6 +146,13 @@ void Process::run_instructions(const t800::isa::Sequence& code) {
                                            {});
 }
 
+void Process::stop(const std::string& why) {
+  set_status("stopped by a run-time error: " + why);
+  deschedule();
+  sc_core::sc_event never;
+  for (;;) sc_core::wait(never);
+}
+
 void Process::mark_ended() {
   deschedule();
   ended_ = true;

@@ -38,6 +38,9 @@ class Process {
   void out(Channel& channel, t800::Message message);
   // Waits for and returns the next message on the channel (occam's `?`).
   t800::Message in(Channel& channel);
+  // occam's STOP, as a run-time error (a subscript out of range) ends a process: it stops for ever,
+  // and a deadlock report names it with `why`.
+  [[noreturn]] void stop(const std::string& why);
   // Runs the branches as parallel processes on the same processor and returns when all have ended.
   void par(const std::vector<Body>& branches);
   // PRI PAR: the first branch at high priority, the others at low.
@@ -72,8 +75,8 @@ class Process {
   // What the process is doing, for deadlock reports.
   void set_status(std::string status) { status_ = std::move(status); }
   const std::string& status() const { return status_; }
-  // What it waits on, for the cycle of waits in a deadlock report (network/wait_cycle.hpp): the channel
-  // of the `in` or `out` it is in (null otherwise), or the PAR branches it waits for.
+  // What it waits on, for the cycle of waits in a deadlock report (network/wait_cycle.hpp): the
+  // channel of the `in` or `out` it is in (null otherwise), or the PAR branches it waits for.
   const Channel* channel() const { return channel_; }
   bool outputting() const { return outputting_; }
   const std::vector<Process*>& branches() const { return branches_; }

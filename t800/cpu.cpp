@@ -55,10 +55,25 @@ void Cpu::dispatch_next() {
 }
 
 void Cpu::acquire(ProcessDescriptor& p) {
+  stop_if_halted(p);
   if (running_ == &p) return;
   make_ready(p);
   if (!running_) dispatch_next();
   while (running_ != &p) sc_core::wait(p.wake);
+}
+
+void Cpu::halt_at(const sc_time& at, std::function<void(const std::string&)> hit) {
+  halt_armed_ = true;
+  halt_at_ = at;
+  halt_hit_ = std::move(hit);
+}
+
+void Cpu::stop_if_halted(ProcessDescriptor& p) {
+  if (!halted()) return;
+  activity_.set_cpu(ProcessorState::idle);
+  if (halt_hit_) halt_hit_(p.name);
+  running_ = nullptr;
+  for (;;) sc_core::wait(never_);
 }
 
 void Cpu::deschedule(ProcessDescriptor& p) {
@@ -132,12 +147,14 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
       yield(p, preempt_pending_ && sc_time_stamp() >= preempt_at_);
       continue;
     }
-    const sc_time limit = slice_limit(p, remaining);
+    sc_time limit = slice_limit(p, remaining);
     const sc_time start = sc_time_stamp();
+    if (halt_armed_ && halt_at_ > start) limit = std::min(limit, halt_at_ - start);
     const std::int64_t dma_before = stealing ? dma_bytes(true) : 0;
     activity_.set_cpu(kind, label);
     sc_core::wait(limit, p.interrupt);
     activity_.set_cpu(ProcessorState::idle);
+    stop_if_halted(p);
     remaining -= sc_time_stamp() - start;
     if (stealing) {  // every byte the link engines moved meanwhile took a memory cycle: the work
                      // takes longer

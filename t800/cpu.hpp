@@ -1,7 +1,7 @@
 // The T800's CPU and its microcoded scheduler: one processor shared by the processes placed on it.
 // High priority processes run until they deschedule and preempt low priority ones (after the
-// interrupt latency); low priority processes are round-robin and timesliced (docs/t800-timing.md section
-// 7).
+// interrupt latency); low priority processes are round-robin and timesliced (docs/t800-timing.md
+// section 7).
 //
 // Every call is made from the SystemC thread of the process concerned. A process holds the CPU from
 // the moment it is dispatched until it deschedules (communication, end), exactly as on the
@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,11 @@ class Cpu {
   void acquire(ProcessDescriptor& p);
 
   bool holds(const ProcessDescriptor& p) const { return running_ == &p; }
+  // A fault (network/faults.hpp): from `at` the processor has halted. Checked whenever a process
+  // would run, so it adds no event: a compute block running at `at` stops there, and no process
+  // runs again (each stays where it was, for ever). `hit` is called with the process stopped.
+  void halt_at(const sc_core::sc_time& at, std::function<void(const std::string&)> hit);
+  bool halted() const { return halt_armed_ && sc_core::sc_time_stamp() >= halt_at_; }
   sc_core::sc_time cycles(std::int64_t n) const { return cycle_ * double(n); }
   const CpuStatistics& statistics() const { return stats_; }
 
@@ -78,6 +84,7 @@ class Cpu {
   bool timesliced() const { return fidelity_ != ComputeFidelity::block; }
   sc_core::sc_time slice_limit(const ProcessDescriptor& p, sc_core::sc_time limit);
   std::int64_t dma_bytes(bool including_now) const;
+  void stop_if_halted(ProcessDescriptor& p);
 
   sc_core::sc_time cycle_;
   sc_core::sc_time latency_;
@@ -93,6 +100,10 @@ class Cpu {
     int end;
   };
   std::vector<DmaEnd> dma_;
+  bool halt_armed_ = false;
+  sc_core::sc_time halt_at_;
+  std::function<void(const std::string&)> halt_hit_;
+  sc_core::sc_event never_;  // what a halted processor's processes wait for
 };
 
 }  // namespace t800

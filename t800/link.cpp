@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "t800/link_timing.hpp"
+#include "t800/payload_bytes.hpp"
 
 namespace t800 {
 
@@ -47,12 +48,18 @@ Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, Proces
   }
 }
 
-void Link::transmit(int from, Message message) {
+std::int64_t Link::submit(int from, Message message) {
   Direction& d = dir_[from];
   const std::int64_t ticket = ++d.submitted;
   d.queue.push_back(std::move(message));
   d.wire_wake.notify(SC_ZERO_TIME);
   d.submitted_event.notify(SC_ZERO_TIME);
+  return ticket;
+}
+
+void Link::transmit(int from, Message message) {
+  Direction& d = dir_[from];
+  const std::int64_t ticket = submit(from, std::move(message));
   while (d.completed < ticket) sc_core::wait(d.sent_event);
 }
 
@@ -69,6 +76,16 @@ Message Link::receive(int to) {
   // Messages to end `to` travel in direction 1 - to.
   const int di = 1 - to;
   Direction& d = dir_[di];
+  arm_input(di);
+  while (d.delivered.empty()) sc_core::wait(d.delivered_event);
+  Message m = std::move(d.delivered.front());
+  d.delivered.pop_front();
+  ++d.taken;
+  return m;
+}
+
+void Link::arm_input(int di) {
+  Direction& d = dir_[di];
   d.armed = true;
   if (d.receiving) count_receiver(di);
   if (d.closed_form.active) {
@@ -84,11 +101,6 @@ Message Link::receive(int to) {
     }
     if (d.receiving && d.received == d.incoming.bytes) complete_receive(di);
   }
-  while (d.delivered.empty()) sc_core::wait(d.delivered_event);
-  Message m = std::move(d.delivered.front());
-  d.delivered.pop_front();
-  ++d.taken;
-  return m;
 }
 
 bool Link::input_pending(int to) const {
@@ -127,6 +139,12 @@ std::int64_t Link::dma_bytes(int e, bool including_now) const {
 void Link::wire_thread(int w) {
   Direction& own = dir_[w];
   for (;;) {
+    if (own.wire_stop.now()) {  // a dead wire carries nothing more
+      if (!own.queue.empty() && own.wire_stop.hit)
+        own.wire_stop.hit("message '" + own.queue.front().label + "' not sent");
+      sc_core::wait(own.wire_wake);
+      continue;
+    }
     const bool data_waiting = !own.queue.empty() && own.may_send && !own.closed_form.active &&
                               own.sent < own.queue.front().bytes;
     if (own.in_flight.active) {
@@ -160,7 +178,8 @@ void Link::send_data_packet(int di) {
   ++d.sent;
   d.dma_sent.add(1, start);
   d.may_send = false;
-  d.detect_event.notify(detect_delay_);
+  apply_byte_fault(di);
+  if (!d.byte_lost) d.detect_event.notify(detect_delay_);
   d.wire_busy_until = start + data_packet_;
   sc_core::wait(data_packet_);
   finish_data_packet(di, start);
@@ -168,6 +187,11 @@ void Link::send_data_packet(int di) {
 
 void Link::finish_data_packet(int di, const sc_time& start) {
   dir_[di].activity.packet(start, data_packet_, true);
+  if (dir_[di].byte_lost) {
+    dir_[di].byte_lost = false;
+    return;
+  }
+  if (lost_on_wire(di, start, data_packet_) || deaf_at(di)) return;
   on_byte_arrived(di);
 }
 
@@ -183,7 +207,9 @@ void Link::send_ack_packet(int w) {
 void Link::finish_ack_packet(int w, const sc_time& start) {
   dir_[w].activity.packet(start, ack_packet_, false);
   const int acked_direction = 1 - w;
+  if (lost_on_wire(w, start, ack_packet_) || deaf_at(w)) return;
   Direction& d = dir_[acked_direction];
+  if (d.queue.empty()) return;  // its message was abandoned (reset_output)
   ++d.acked;
   if (d.acked ==
       d.queue.front().bytes) {  // the whole message is acknowledged: the sender may go on
@@ -211,6 +237,7 @@ void Link::finish_in_flight(int w) {
 
 void Link::on_detect(int di) {
   Direction& d = dir_[di];
+  if (deaf_at(di)) return;  // a halted or dead receiver acknowledges nothing
   if (d.armed || d.accepted_before_detect) {
     d.accepted_before_detect = false;
     queue_ack(di);
@@ -226,6 +253,7 @@ void Link::queue_ack(int di) {
 }
 
 void Link::on_ack_processed(int di) {
+  if (dir_[di].wire_stop.now()) return;
   dir_[di].may_send = true;
   dir_[di].wire_wake.notify(SC_ZERO_TIME);
 }
@@ -471,6 +499,142 @@ void Link::hand_over(int di) {
   }
   d.wire_wake.notify(SC_ZERO_TIME);
   back.wire_wake.notify(SC_ZERO_TIME);
+}
+
+// ---- faults ----
+
+void Link::arm_fault() {
+  faulted_ = true;
+  fidelity_ = LinkFidelity::packet;  // faults act on packets
+}
+
+void Link::drop_byte(int d, const sc_time& at, FaultHit hit) {
+  arm_fault();
+  dir_[d].byte_fault = {true, false, 0, at, std::move(hit)};
+}
+
+void Link::corrupt_byte(int d, const sc_time& at, std::uint8_t mask, FaultHit hit) {
+  arm_fault();
+  dir_[d].byte_fault = {true, true, mask, at, std::move(hit)};
+}
+
+void Link::stop_wire(int w, const sc_time& at, FaultHit hit) {
+  arm_fault();
+  Stop& s = dir_[w].wire_stop;
+  if (s.armed && s.at <= at) return;
+  s = {true, at, std::move(hit)};
+  dir_[w].wire_wake.notify(SC_ZERO_TIME);
+}
+
+void Link::deafen_end(int e, const sc_time& at, FaultHit hit) {
+  arm_fault();
+  Stop& s = dir_[1 - e].deaf;  // what arrives at end e travels in direction 1 - e
+  if (s.armed && s.at <= at) return;
+  s = {true, at, std::move(hit)};
+}
+
+// A packet on a wire that stopped before the packet ended never arrives.
+bool Link::lost_on_wire(int w, const sc_time& start, const sc_time& length) {
+  const Stop& s = dir_[w].wire_stop;
+  if (!s.armed || start + length <= s.at) return false;
+  if (s.hit) s.hit("a packet on the wire");
+  return true;
+}
+
+bool Link::deaf_at(int di) {
+  const Stop& s = dir_[di].deaf;
+  if (!s.now()) return false;
+  if (s.hit) s.hit("a packet arriving at the halted end");
+  return true;
+}
+
+void Link::apply_byte_fault(int di) {
+  Direction& d = dir_[di];
+  ByteFault& f = d.byte_fault;
+  if (!f.armed || sc_time_stamp() < f.at) return;
+  f.armed = false;
+  const std::string what = "byte " + std::to_string(d.sent) + " of " +
+                           std::to_string(d.incoming.bytes) + " of message '" + d.incoming.label +
+                           "'";
+  if (!f.corrupt) {
+    d.byte_lost = true;
+    if (f.hit) f.hit(what + " lost");
+    return;
+  }
+  const bool changed = flip_payload_byte(d.incoming.payload, d.sent - 1, f.mask);
+  if (f.hit) f.hit(what + (changed ? " changed" : " changed (its value is not modelled)"));
+}
+
+bool Link::transmit(int from, Message message, const sc_time& deadline) {
+  Direction& d = dir_[from];
+  const std::int64_t ticket = submit(from, std::move(message));
+  while (d.completed < ticket) {
+    if (sc_time_stamp() >= deadline) {
+      reset_output(from);
+      return false;
+    }
+    sc_core::wait(deadline - sc_time_stamp(), d.sent_event);
+  }
+  return true;
+}
+
+std::optional<Message> Link::receive(int to, const sc_time& deadline) {
+  const int di = 1 - to;
+  Direction& d = dir_[di];
+  arm_input(di);
+  while (d.delivered.empty()) {
+    if (sc_time_stamp() >= deadline) {
+      reset_input(di);
+      return std::nullopt;
+    }
+    sc_core::wait(deadline - sc_time_stamp(), d.delivered_event);
+  }
+  Message m = std::move(d.delivered.front());
+  d.delivered.pop_front();
+  ++d.taken;
+  return m;
+}
+
+// resetch on the sending end: the engine forgets the message (one channel per link direction: it
+// is the only one queued) and what it owed; the receiving end keeps nothing of it either (U: the
+// INMOS library resets both ends, Reinitialise).
+void Link::reset_output(int di) {
+  Direction& d = dir_[di];
+  if (d.closed_form.active) hand_over(di);
+  if (d.queue.empty()) return;
+  const bool started = d.sent > 0 || d.receiving;
+  d.queue.pop_front();
+  ++d.completed;
+  ++d.taken;  // no input will take it
+  d.sent = d.acked = 0;
+  d.may_send = true;
+  d.byte_lost = false;
+  d.detect_event.cancel();
+  d.process_event.cancel();
+  dir_[1 - di].acks_pending = 0;  // the reverse wire's acknowledges are all for this direction
+  d.ack_owed = d.accepted_before_detect = false;
+  if (started && end(di)) end(di)->transfer_end();
+  if (d.receiving) {
+    d.receiving = false;
+    d.received = 0;
+    if (d.receiver_counted && end(1 - di)) end(1 - di)->transfer_end();
+    d.receiver_counted = false;
+  }
+  d.wire_wake.notify(SC_ZERO_TIME);
+}
+
+// resetch on the receiving end: the input is disarmed and a message half in is dropped.
+void Link::reset_input(int di) {
+  Direction& d = dir_[di];
+  if (d.closed_form.active) hand_over(di);
+  d.armed = false;
+  d.ack_owed = false;
+  if (d.receiver_counted && end(1 - di)) end(1 - di)->transfer_end();
+  d.receiver_counted = false;
+  if (d.receiving) {
+    d.receiving = false;
+    d.received = 0;
+  }
 }
 
 }  // namespace t800

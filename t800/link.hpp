@@ -19,7 +19,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <list>
+#include <optional>
 #include <string>
 
 #include <systemc>
@@ -43,6 +45,29 @@ class Link : public sc_core::sc_module {
   // Called from the receiving process's thread at end `to`: arms the input DMA and returns the next
   // message.
   Message receive(int to);
+
+  // occam's OutputOrFail / InputOrFail (INMOS's reliable-link library): as transmit and receive,
+  // but at `deadline` the link engine of that end is reset (resetch) and the message abandoned:
+  // false / nullopt. For a link used by one channel (one message queued at a time).
+  bool transmit(int from, Message message, const sc_core::sc_time& deadline);
+  std::optional<Message> receive(int to, const sc_core::sc_time& deadline);
+
+  // Faults (network/faults.hpp). Each is checked when the link would act, so an armed fault adds
+  // no event; `hit` is called, with what it hit, each time it changes something. A link with a
+  // fault runs at the packet level. Direction d's next data packet starting at or after `at`:
+  // lost on the wire (the receiver never gets the byte, the sender never its acknowledge), or
+  // arriving with its value XORed with `mask` (the message's payload changes,
+  // t800/payload_bytes.hpp).
+  using FaultHit = std::function<void(const std::string& what)>;
+  void drop_byte(int d, const sc_core::sc_time& at, FaultHit hit);
+  void corrupt_byte(int d, const sc_core::sc_time& at, std::uint8_t mask, FaultHit hit);
+  // From `at` wire w starts nothing (neither its direction's data nor the other's acknowledges),
+  // and a packet on it at `at` is lost.
+  void stop_wire(int w, const sc_core::sc_time& at, FaultHit hit);
+  // From `at` end e takes nothing in: its processor has halted.
+  void deafen_end(int e, const sc_core::sc_time& at, FaultHit hit);
+  // Any fault has taken effect on this link.
+  bool faulted() const { return faulted_; }
 
   // For ALT: a message for end `to` is on its way (its sender has started the output) and no input
   // has taken it yet; the event fires whenever a sender starts one (U: a T800 link channel becomes
@@ -98,9 +123,22 @@ class Link : public sc_core::sc_module {
     sc_core::sc_time start;
   };
 
-  // Message queues are lists: an empty std::deque already holds a 512-byte block, and a 1024-transputer
-  // network has thousands of link directions, almost all of them idle (issue 12: host memory per
-  // transputer).
+  // Message queues are lists: an empty std::deque already holds a 512-byte block, and a
+  // 1024-transputer network has thousands of link directions, almost all of them idle (issue 12:
+  // host memory per transputer).
+  struct ByteFault {
+    bool armed = false, corrupt = false;
+    std::uint8_t mask = 0;
+    sc_core::sc_time at;
+    FaultHit hit;
+  };
+  struct Stop {
+    bool armed = false;
+    sc_core::sc_time at;
+    FaultHit hit;
+    bool now() const { return armed && sc_core::sc_time_stamp() >= at; }
+  };
+
   struct Direction {
     // sending DMA
     std::list<Message> queue;
@@ -127,6 +165,10 @@ class Link : public sc_core::sc_module {
     LinkActivity activity;
     ClosedForm closed_form;
     DmaCount dma_sent, dma_received;  // bytes counted so far (closed forms: once settled)
+    // faults: on this direction's next byte, on this direction's wire, at the end it arrives at
+    ByteFault byte_fault;
+    bool byte_lost = false;  // the data packet on the wire now was dropped
+    Stop wire_stop, deaf;
   };
 
   void wire_thread(int wire);
@@ -155,6 +197,16 @@ class Link : public sc_core::sc_module {
   void complete_receive(int d);
   void count_receiver(int d);
   ProcessorActivity* end(int e) { return end_[e]; }
+  std::int64_t submit(int from, Message message);  // queues it; its ticket
+  void arm_input(int d);
+  // faults and resets
+  void arm_fault();
+  bool lost_on_wire(int w, const sc_core::sc_time& start, const sc_core::sc_time& length);
+  bool deaf_at(int arriving_direction);
+  void apply_byte_fault(int d);
+  void reset_output(int d);
+  void reset_input(int d);
+  bool faulted_ = false;
 
   LinkConfig config_;
   LinkFidelity fidelity_;

@@ -32,13 +32,34 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
     if (l.bytes > 0 || l.busy_us > 0)
       out += fmt::format("{:<44} {:>10} {:>9} {:>12.3f} {:>8.1f}\n", l.name, l.bytes, l.messages,
                          l.busy_us, 100.0 * l.utilisation);
+  if (!r.faults.empty()) out += "\nfaults\n";
+  for (const network::FaultRecord& f : r.faults) {
+    out += "  " + f.describe() + ": ";
+    if (!f.fired) {
+      out += "no effect (nothing it could hit after that time)\n";
+      continue;
+    }
+    out += fmt::format("took effect at {:.3f} us ({})", f.fired_us, f.hit);
+    out += f.detected_by.empty()
+               ? ", not detected"
+               : fmt::format(", detected by {} at {:.3f} us", f.detected_by, f.detected_us);
+    out += f.recovered_how.empty()
+               ? ", not recovered"
+               : fmt::format(", recovered: {} (done at {:.3f} us, {:.3f} us after it took effect)",
+                             f.recovered_how, f.recovered_us, f.cost_us());
+    if (!f.stranded.empty()) out += fmt::format("; left waiting: {}", fmt::join(f.stranded, ", "));
+    out += "\n";
+  }
   if (r.limit != network::Limit::none) {
     out += fmt::format("\nSTOPPED by the {} limit before the run ended: no workload results\n",
                        r.limit == network::Limit::sim_time ? "simulated-time" : "wall-time");
   } else if (!r.blocked.empty()) {
     out += "\nDEADLOCK: the simulation ran out of events with processes still blocked:\n";
+    for (const network::FaultRecord& f : r.faults)
+      if (f.fired) out += "  (after the fault " + f.describe() + ", not recovered)\n";
     for (const auto& b : r.blocked)
-      out += fmt::format("  {} on {}: {}, waiting for {}\n", b.process, b.processor, b.status, b.waits_for);
+      out += fmt::format("  {} on {}: {}, waiting for {}\n", b.process, b.processor, b.status,
+                         b.waits_for);
     if (!r.wait_cycle.empty()) {
       out += "the cycle of waits:\n";
       for (const std::string& step : r.wait_cycle) out += "  " + step + "\n";

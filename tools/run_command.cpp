@@ -12,9 +12,10 @@
 #include "network/config_error.hpp"
 #include "tools/commands.hpp"
 #include "tools/report_format.hpp"
-#include "tools/run_progress.hpp"
 #include "tools/run_inputs.hpp"
+#include "tools/run_progress.hpp"
 #include "tools/scene.hpp"
+#include "tools/scene_faults.hpp"
 #include "tools/trace_files.hpp"
 #include "workloads/params.hpp"
 #include "workloads/registry.hpp"
@@ -55,6 +56,7 @@ std::string workload_help() {
 struct RunArgs {
   std::string scene;
   std::vector<std::string> overrides;
+  std::vector<std::string> faults;
   bool json = false;
   TraceFiles traces;
   double max_sim_s = 0, max_wall_s = 0;
@@ -75,7 +77,9 @@ std::string limit_text(const RunArgs& args, const workloads::RunReport& report) 
 int run_scene(const RunArgs& args) {
   check_limit(args.max_sim_s, "--max-sim-time");
   check_limit(args.max_wall_s, "--max-wall-time");
-  const Scene scene = load_scene(args.scene, args.overrides);
+  Scene scene = load_scene(args.scene, args.overrides);
+  for (const std::string& f : args.faults)
+    scene.faults.push_back(parse_fault_flag(f, scene.topology));
   workloads::RunInputs inputs = inputs_from(scene, args.traces.any());
   check_trace_files(args.traces);
   inputs.options.max_sim_s = args.max_sim_s;
@@ -90,9 +94,10 @@ int run_scene(const RunArgs& args) {
   write_traces(report, args.traces);  // also after a deadlock: the trace shows who waited for whom
   if (!report.blocked.empty()) return kExitFailure;
   if (report.limit != network::Limit::none) {
-    std::cerr << fmt::format("error: stopped by {} at simulated time {:.3f} us, before the run ended: "
-                             "no workload results\n",
-                             limit_text(args, report), report.simulated_us);
+    std::cerr << fmt::format(
+        "error: stopped by {} at simulated time {:.3f} us, before the run ended: "
+        "no workload results\n",
+        limit_text(args, report), report.simulated_us);
     return kExitLimit;
   }
   if (!report.failure.empty()) {
@@ -113,10 +118,16 @@ void add_run_command(CLI::App& app) {
          "--set", args->overrides,
          "override a scene key, e.g. --set workload.bytes=4000 --set network.link_speed_mbps=10")
       ->type_name("KEY=VALUE");
+  cmd->add_option(
+         "--fault", args->faults,
+         "inject a fault (repeatable), as a [[fault]] table: kind=corrupt|drop,link=A->B | "
+         "kind=dead-link,link=A-B | kind=halt,processor=P; at_us=T; xor=1..255 (corrupt)")
+      ->type_name("KEY=VALUE,...");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the text report");
   add_trace_options(*cmd, args->traces);
-  cmd->add_option("--max-sim-time", args->max_sim_s,
-                  "stop the run after this many seconds of simulated time (exit code 4; 0: no limit)")
+  cmd->add_option(
+         "--max-sim-time", args->max_sim_s,
+         "stop the run after this many seconds of simulated time (exit code 4; 0: no limit)")
       ->type_name("SECONDS");
   cmd->add_option("--max-wall-time", args->max_wall_s,
                   "stop the run after this many seconds of host time (exit code 4; 0: no limit)")

@@ -76,6 +76,7 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
   in.options.keep_intervals = keep_intervals;
   in.options.fidelity = scene.fidelity;
   in.options.checked = scene.run_time_checks;
+  in.faults = scene.faults;
   in.kind = scene.workload_kind;
   in.params = scene.workload;
   in.placement = scene.placement;

@@ -1,4 +1,5 @@
 #include "tools/scene.hpp"
+#include "tools/scene_faults.hpp"
 
 #include <toml++/toml.h>
 
@@ -617,7 +618,7 @@ void SceneReader::placement(Scene& scene) const {
 Scene SceneReader::read() {
   check_keys(root_,
              {"name", "description", "network", "topology", "workload", "placement", "calibration",
-              "fidelity", "compiler"},
+              "fidelity", "compiler", "fault"},
              "a scene");
   Scene scene;
   scene.file = file_;
@@ -637,6 +638,7 @@ Scene SceneReader::read() {
   calibration(scene);
   fidelity(scene);
   compiler(scene);
+  scene.faults = read_faults(root_.get("fault"), file_, scene.topology);
   return scene;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "network/faults.hpp"
 #include "network/fidelity.hpp"
 #include "network/topology.hpp"
 #include "t800/processor_config.hpp"
@@ -36,6 +37,8 @@ struct Scene {
   // workload parameter given ("workload.NAME"), the [workload] table ("workload") and what gave
   // the network ("network"); a file position, or the --set flag that gave it.
   std::map<std::string, network::SourcePos> origins;
+  // [[fault]] tables (tools/scene_faults.hpp), then any --fault flags the command adds.
+  std::vector<network::FaultSpec> faults;
 };
 
 // Where `keys` (most specific first) were written: the first one given, else the [workload] table

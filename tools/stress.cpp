@@ -172,6 +172,8 @@ struct Tally {
       case Status::non_finite:
         ++non_finite;
         break;
+      case Status::lost:  // only a pipeline with faults loses rows
+        break;
     }
   }
 

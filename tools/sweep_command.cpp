@@ -20,6 +20,7 @@
 #include "tools/child_run.hpp"
 #include "tools/commands.hpp"
 #include "tools/scene.hpp"
+#include "tools/scene_faults.hpp"
 #include "tools/sweep_csv.hpp"
 #include "tools/sweep_progress.hpp"
 #include "tools/sweep_result.hpp"
@@ -35,6 +36,7 @@ namespace fs = std::filesystem;
 struct SweepArgs {
   std::string scene;
   std::vector<std::string> vary, overrides;
+  std::vector<std::string> faults;  // --fault, passed to every point
   int jobs = int(std::max(1u, std::thread::hardware_concurrency()));
   std::string output;
   double timeout_s = 0;
@@ -89,7 +91,8 @@ void check_scene(const SweepArgs& a, const Sweep& s) {
     std::vector<std::string> overrides = a.overrides;
     for (const auto& [key, value] : point) overrides.push_back(key + "=" + value);
     try {
-      load_scene(a.scene, overrides);
+      const Scene scene = load_scene(a.scene, overrides);
+      for (const std::string& f : a.faults) parse_fault_flag(f, scene.topology);
       return;
     } catch (const network::ConfigError& e) {
       if (!first) first = e;
@@ -118,6 +121,7 @@ std::vector<std::string> run_argv(const SweepArgs& a, const SweepPoint& point) {
   std::vector<std::string> argv = {self_executable(), "run", a.scene};
   for (const std::string& o : a.overrides) argv.insert(argv.end(), {"--set", o});
   for (const auto& [key, value] : point) argv.insert(argv.end(), {"--set", key + "=" + value});
+  for (const std::string& f : a.faults) argv.insert(argv.end(), {"--fault", f});
   argv.push_back("--json");
   return argv;
 }
@@ -215,9 +219,10 @@ int run_sweep(const SweepArgs& a, const Sweep& s) {
     progress.end();
     append.close();
     write_file("-o", a.output, results_csv(final_table(s, earlier, fresh)));
-    std::cerr << fmt::format("sweep: {}; {} of {} points finished, in {}; rerun with the same -o to run "
-                             "the others\n",
-                             e.what(), fresh.size(), todo.size(), a.output);
+    std::cerr << fmt::format(
+        "sweep: {}; {} of {} points finished, in {}; rerun with the same -o to run "
+        "the others\n",
+        e.what(), fresh.size(), todo.size(), a.output);
     return 128 + e.signal;
   }
   progress.end();
@@ -268,6 +273,7 @@ int emit_jobs(const SweepArgs& a, const Sweep& s) {
                        " sweep " + shell_quote(fs::absolute(a.scene));
   for (const std::string& v : a.vary) common += " --vary " + shell_quote(v);
   for (const std::string& o : a.overrides) common += " --set " + shell_quote(o);
+  for (const std::string& f : a.faults) common += " --fault " + shell_quote(f);
   if (a.timeout_s > 0) common += fmt::format(" --timeout {}", a.timeout_s);
   const int width = int(std::to_string(s.points.size()).size());
   std::string lines;
@@ -320,6 +326,8 @@ void add_sweep_command(CLI::App& app) {
       ->required();
   cmd->add_option("--set", a->overrides, "a fixed override for every point")
       ->type_name("KEY=VALUE");
+  cmd->add_option("--fault", a->faults, "a fault injected into every point (as run --fault)")
+      ->type_name("KEY=VALUE,...");
   cmd->add_option("-j,--jobs", a->jobs, "points run at a time (default: the number of CPUs)");
   cmd->add_option(
       "-o,--output", a->output,

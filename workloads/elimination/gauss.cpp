@@ -24,6 +24,8 @@ const char* to_string(Status status) {
       return "no_pivot";
     case Status::non_finite:
       return "non_finite";
+    case Status::lost:
+      return "lost";
   }
   return "?";
 }

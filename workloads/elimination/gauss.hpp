@@ -57,6 +57,7 @@ enum class Status {
   unstable,    // solved, but the pivot growth exceeded PivotRule::growth_limit: treat as suspect
   no_pivot,    // a step found no usable pivot (singular to the threshold, or an exact zero column)
   non_finite,  // a NaN or infinity appeared
+  lost,        // a row never arrived intact (the pipeline's recovery could not mend a fault)
 };
 const char* to_string(Status status);
 inline bool solved(Status status) {

@@ -112,6 +112,8 @@ class DynamicsFarm : public Workload {
     settings_.schedule = p.text("schedule");
     settings_.allocation = p.text("allocation");
     settings_.buffer = int(p.integer("buffer"));
+    settings_.recovery = p.flag("recovery");
+    settings_.timeout_us = p.real("recovery_timeout_us");
     return settings_;
   }
 
@@ -196,6 +198,12 @@ const Registration registered_dynamics_farm{
           {}, {}, {"farm", "evaluation"}},
          {"buffer", T::integer, std::int64_t{2}, "on-demand: subtasks in flight per worker (1 = no buffering)",
           1, 8, {}},
+         {"recovery", T::flag, false,
+          "recover from a halted or unreachable worker: the master's exchanges with each worker give up "
+          "at a deadline and its subtasks go to the others (README \"Faults\")", {}, {}, {}},
+         {"recovery_timeout_us", T::real, 0.0,
+          "recovery: how long past a worker's predicted time the master waits (0: that time again + 50 us)",
+          0, 1e9, {}},
          {"q", T::real_list, std::vector<double>{0.1, 0.2, 0.5, 0.3, 0.4, 0.5},
           "joint positions (rad, q3 in m); default: the README's reference state", {}, {}, {}},
          {"qd", T::real_list, std::vector<double>{0.1, -0.2, 0.05, 0.3, -0.1, 0.2}, "joint rates", {}, {}, {}},

@@ -1,10 +1,14 @@
 #include "workloads/farm/farm_program.hpp"
 
 #include <algorithm>
+#include <any>
 #include <optional>
 #include <stdexcept>
 
 #include "workloads/setting_error.hpp"
+
+#include "network/reliable.hpp"
+#include "t800/payload_bytes.hpp"
 
 #include "t800/link_timing.hpp"
 #include "t800/timing_table.hpp"
@@ -15,6 +19,38 @@ namespace workloads {
 namespace {
 constexpr std::int64_t kIntBytes = 4;  // a subtask index or a marker: one occam INT
 constexpr int kEndOfRound = -1;
+
+// How the farm's messages change when a byte arrives changed (a corrupting link fault): the input's
+// REALs, each result REAL, an on-demand result's index and value.
+template <class S>
+void register_farm_payloads(const dynamics::RobotModel& model) {
+  t800::register_payload_bytes(
+      typeid(WorkerOrder<S>), [&model](std::any& a, std::int64_t byte, std::uint8_t mask) {
+        auto& order = std::any_cast<WorkerOrder<S>&>(a);
+        if (!order.input) return false;
+        std::vector<S*> fields = dynamics::message_fields(model, *order.input);
+        const std::size_t field = std::size_t(byte) / sizeof(S);
+        if (field >= fields.size()) return false;  // the task list of a recovery's order
+        *fields[field] = t800::flip_byte(*fields[field], byte % std::int64_t(sizeof(S)), mask);
+        return true;
+      });
+  t800::register_payload_bytes(typeid(std::vector<S>),
+                               [](std::any& a, std::int64_t byte, std::uint8_t mask) {
+                                 auto& values = std::any_cast<std::vector<S>&>(a);
+                                 S& v = values.at(std::size_t(byte) / sizeof(S));
+                                 v = t800::flip_byte(v, byte % std::int64_t(sizeof(S)), mask);
+                                 return true;
+                               });
+  t800::register_payload_bytes(
+      typeid(std::pair<int, S>), [](std::any& a, std::int64_t byte, std::uint8_t mask) {
+        auto& result = std::any_cast<std::pair<int, S>&>(a);
+        if (byte < kIntBytes)
+          result.first = t800::flip_byte(result.first, byte, mask);
+        else
+          result.second = t800::flip_byte(result.second, byte - kIntBytes, mask);
+        return true;
+      });
+}
 }  // namespace
 
 template <class S>
@@ -26,6 +62,9 @@ FarmProgram<S>::FarmProgram(const dynamics::RobotModel& model, FarmSettings sett
   if (settings_.schedule == "explicit" && settings_.allocation.empty())
     throw SettingError({"workload.allocation", "workload.schedule"},
                        "workload.schedule = \"explicit\" needs workload.allocation");
+  if (settings_.recovery && settings_.schedule == "on-demand")
+    throw SettingError({"workload.recovery", "workload.schedule"},
+                       "workload.recovery needs workload.schedule = \"static\" or \"explicit\"");
 }
 
 template <class S>
@@ -48,8 +87,8 @@ void FarmProgram<S>::build(network::Machine& m, const std::string& master_proces
     if (!has_work(w)) continue;
     m.spawn(workers_[w], "worker", t800::Priority::low,
             [this, w](network::Process& p) { worker(p, w); });
-    // The worker's code: its subtasks' PROCs (on demand it may get any of them).
-    if (settings_.schedule == "on-demand")
+    // The worker's code: its subtasks' PROCs (on demand, or recovering, it may get any of them).
+    if (settings_.schedule == "on-demand" || settings_.recovery)
       for (const FarmTask& t : work_.tasks) m.declare_code(workers_[w], "worker", t.work.code);
     else
       for (int t : allocation_[w])
@@ -57,6 +96,7 @@ void FarmProgram<S>::build(network::Machine& m, const std::string& master_proces
   }
   m.declare_code(master_, master_process, work_.master_input.code);
   m.declare_code(master_, master_process, work_.master_assembly.code);
+  register_farm_payloads<S>(model_);
 }
 
 // The list scheduler's view of each worker: its distance from the master in hops sets when its
@@ -117,10 +157,18 @@ FarmRound FarmProgram<S>::evaluate(network::Process& p, const dynamics::JointVec
   next_ = 0;
   const std::int64_t input_bytes = dynamics::worker_input_reals(model_) * kReal;
   std::vector<network::Process::Body> talk;
+  failed_.clear();
+  recovery_started_us_ = recovery_done_us_ = -1;
   for (std::size_t w = 0; w < workers_.size(); ++w) {
-    if (!has_work(w)) continue;
+    if (!has_work(w) || !alive(w)) continue;
     talk.push_back([this, w, input_bytes, &input, &data](network::Process& branch) {
-      branch.out(*to_[w], {input_bytes, input, "input"});
+      const WorkerOrder<S> order{
+          input, settings_.schedule == "on-demand" ? std::vector<int>{} : allocation_[w]};
+      if (settings_.recovery) {
+        if (!exchange(branch, w, order, input_bytes, data)) failed_.push_back(w);
+        return;
+      }
+      branch.out(*to_[w], {input_bytes, order, "input"});
       if (settings_.schedule == "on-demand")
         hand_out(branch, w, data);
       else
@@ -130,6 +178,7 @@ FarmRound FarmProgram<S>::evaluate(network::Process& p, const dynamics::JointVec
   round.farm_start_us = p.now_us();
   const std::vector<double> busy_before = workers_busy_now(p.machine());
   p.par(talk);
+  if (!failed_.empty()) reassign(p, input, input_bytes, data);
   round.farm_end_us = p.now_us();
   const std::vector<double> busy_after = workers_busy_now(p.machine());
   for (std::size_t w = 0; w < workers_.size(); ++w)
@@ -144,9 +193,9 @@ template <class S>
 void FarmProgram<S>::finish(network::Process& p) {
   std::vector<network::Process::Body> stop;
   for (std::size_t w = 0; w < workers_.size(); ++w)
-    if (has_work(w))
+    if (has_work(w) && alive(w))
       stop.push_back([this, w](network::Process& branch) {
-        branch.out(*to_[w], {kIntBytes, std::optional<dynamics::WorkerInput<S>>{}, "finish"});
+        branch.out(*to_[w], {kIntBytes, WorkerOrder<S>{}, "finish"});
       });
   p.par(stop);
 }
@@ -178,7 +227,9 @@ void FarmProgram<S>::hand_out(network::Process& p, std::size_t w, dynamics::Dyna
   for (int i = 0; i < settings_.buffer; ++i) give();
   while (outstanding > 0) {
     const auto result = std::any_cast<std::pair<int, S>>(p.in(*from_[w]).payload);
-    data.values[result.first] = result.second;
+    if (result.first < 0 || std::size_t(result.first) >= data.values.size())
+      p.stop("a subtask index out of range (" + std::to_string(result.first) + ")");
+    data.values[std::size_t(result.first)] = result.second;
     done_by_[w].push_back(result.first);
     --outstanding;
     give();
@@ -189,22 +240,128 @@ void FarmProgram<S>::hand_out(network::Process& p, std::size_t w, dynamics::Dyna
 template <class S>
 void FarmProgram<S>::worker(network::Process& p, std::size_t w) {
   for (;;) {
-    const auto input =
-        std::any_cast<std::optional<dynamics::WorkerInput<S>>>(p.in(*to_[w]).payload);
-    if (!input) return;
+    const auto order = std::any_cast<WorkerOrder<S>>(p.in(*to_[w]).payload);
+    if (!order.input) return;
     if (settings_.schedule == "on-demand")
-      on_demand_round(p, w, *input);
+      on_demand_round(p, w, *order.input);
     else
-      static_round(p, w, *input);
+      static_round(p, w, order.tasks, *order.input);
   }
 }
 
 template <class S>
-void FarmProgram<S>::static_round(network::Process& p, std::size_t w,
+void FarmProgram<S>::static_round(network::Process& p, std::size_t w, const std::vector<int>& tasks,
                                   const dynamics::WorkerInput<S>& input) {
   std::vector<S> values;
-  for (int t : allocation_[w]) values.push_back(run_task(p, t, input));
+  for (int t : tasks) values.push_back(run_task(p, t, input));
   p.out(*from_[w], {std::int64_t(values.size()) * kReal, values, "results"});
+}
+
+// ---- recovery ----
+
+template <class S>
+bool FarmProgram<S>::alive(std::size_t w) const {
+  return std::find(lost_.begin(), lost_.end(), workers_[w]) == lost_.end();
+}
+
+// What the list scheduler expects worker w to take for `tasks` subtasks of its allocation: its
+// subtasks' compute and the input and results on the link, hop by hop.
+template <class S>
+double FarmProgram<S>::predicted_us(const network::Machine& m, std::size_t w,
+                                    const std::vector<int>& tasks) const {
+  const t800::LinkTiming link(m.options().link);
+  const double hops = double(m.topology().shortest_path(master_, workers_[w]).size() - 1);
+  // The tasks' cycles on this worker, with its memory as placed (code off chip costs more).
+  const t800::ComputeModel& model = m.compute_model(workers_[w]);
+  double compute_ns = 0;
+  for (int t : tasks) compute_ns += double(model.cycles(work_.tasks[std::size_t(t)].work));
+  compute_ns *= model.cycle_ns();
+  const std::int64_t bytes =
+      (dynamics::worker_input_reals(model_) + std::int64_t(tasks.size())) * kReal;
+  return (compute_ns + hops * link.arrival_ns(bytes)) / 1000.0;
+}
+
+// The order out, the results back, each given up at its deadline: the worker's predicted time plus
+// the timeout (workload.recovery_timeout_us, or the predicted time again and 50 us).
+template <class S>
+bool FarmProgram<S>::exchange(network::Process& p, std::size_t w, const WorkerOrder<S>& order,
+                              std::int64_t bytes, dynamics::DynamicsData<S>& data) {
+  network::Machine& m = p.machine();
+  const double predicted = predicted_us(m, w, order.tasks);
+  const double slack = settings_.timeout_us > 0 ? settings_.timeout_us : predicted + 50.0;
+  if (!network::out_or_fail(p, *to_[w], {bytes, order, "input"}, p.now_us() + predicted + slack))
+    return false;
+  const auto reply = network::in_or_fail(p, *from_[w], p.now_us() + predicted + slack);
+  if (!reply) return false;
+  const auto& values = std::any_cast<const std::vector<S>&>(reply->payload);
+  for (std::size_t i = 0; i < values.size() && i < order.tasks.size(); ++i)
+    data.values[std::size_t(order.tasks[i])] = values[i];
+  done_by_[w].insert(done_by_[w].end(), order.tasks.begin(), order.tasks.end());
+  return true;
+}
+
+// The failed workers' subtasks go to the others, each to the surviving worker with the least
+// predicted work so far (longest first), in one more round of exchanges; a worker that fails in it
+// is given up too, until every subtask has a result or no worker is left.
+template <class S>
+void FarmProgram<S>::reassign(network::Process& p,
+                              const std::optional<dynamics::WorkerInput<S>>& input,
+                              std::int64_t input_bytes, dynamics::DynamicsData<S>& data) {
+  network::Machine& m = p.machine();
+  recovery_started_us_ = p.now_us();
+  while (!failed_.empty()) {
+    std::vector<int> orphans;
+    for (std::size_t w : failed_) {
+      lost_.push_back(workers_[w]);
+      const std::vector<int> path = m.topology().shortest_path(master_, workers_[w]);
+      m.faults().detected(m, path,
+                          "the master's InputOrFail / OutputOrFail deadline (" +
+                              m.node_name(workers_[w]) + " did not answer)");
+      orphans.insert(orphans.end(), allocation_[w].begin(), allocation_[w].end());
+      allocation_[w].clear();
+    }
+    std::vector<std::size_t> survivors;
+    for (std::size_t w = 0; w < workers_.size(); ++w)
+      if (alive(w) && has_work(w)) survivors.push_back(w);
+    if (survivors.empty()) return;  // nobody left: the fault stays unrecovered
+    std::stable_sort(orphans.begin(), orphans.end(), [&](int a, int b) {
+      return work_.tasks[std::size_t(a)].cycles > work_.tasks[std::size_t(b)].cycles;
+    });
+    std::vector<double> load(workers_.size(), 0);
+    for (std::size_t w : survivors)
+      for (int t : allocation_[w]) load[w] += double(work_.tasks[std::size_t(t)].cycles);
+    std::vector<std::vector<int>> extra(workers_.size());
+    for (int t : orphans) {
+      std::size_t best = survivors.front();
+      for (std::size_t w : survivors)
+        if (load[w] < load[best]) best = w;
+      extra[best].push_back(t);
+      load[best] += double(work_.tasks[std::size_t(t)].cycles);
+    }
+    const std::vector<std::size_t> lost_now = failed_;
+    failed_.clear();
+    std::vector<network::Process::Body> talk;
+    for (std::size_t w : survivors) {
+      if (extra[w].empty()) continue;
+      allocation_[w].insert(allocation_[w].end(), extra[w].begin(), extra[w].end());
+      talk.push_back([this, w, &extra, &input, input_bytes, &data](network::Process& branch) {
+        // A recovery's order names its subtasks: one INT each and the count.
+        const std::int64_t bytes = input_bytes + kIntBytes * std::int64_t(extra[w].size() + 1);
+        if (!exchange(branch, w, WorkerOrder<S>{input, extra[w]}, bytes, data))
+          failed_.push_back(w);
+      });
+    }
+    p.par(talk);
+    if (!failed_.empty()) continue;
+    recovery_done_us_ = p.now_us();
+    for (std::size_t w : lost_now) {
+      std::string to;
+      for (std::size_t s : survivors)
+        if (!extra[s].empty()) to += (to.empty() ? "" : ", ") + m.node_name(workers_[s]);
+      m.faults().recovered(m, m.topology().shortest_path(master_, workers_[w]),
+                           "the master gave " + m.node_name(workers_[w]) + "'s subtasks to " + to);
+    }
+  }
 }
 
 // A feeder takes assignments off the link while a computer works through them, so the next subtask

@@ -80,6 +80,8 @@ PipelineSettings elimination_settings(const Params& p) {
   s.rule.growth_limit = growth_limit(p, s.precision);
   s.overlap = p.flag("overlap");
   s.buffered = p.flag("buffered");
+  s.recovery = p.flag("recovery");
+  s.timeout_us = p.real("recovery_timeout_us");
   return s;
 }
 
@@ -136,6 +138,13 @@ const Registration registered_elimination{
           "each level-2 processor runs input, elimination and output as three parallel processes joined by "
           "one-row buffers (docs/table6.md); false = one process that takes, eliminates and passes a row",
           {}, {}, {}},
+         {"recovery", T::flag, false,
+          "level 3 detects a corrupted or missing row (a checksum with every row, a timeout) and has level 1 "
+          "resend it through another level-2 processor (strict, unbuffered steps; README \"Faults\")",
+          {}, {}, {}},
+         {"recovery_timeout_us", T::real, 1000.0,
+          "recovery: how long a level waits for the next message of a step before it gives up on it", 1.0, 1e9,
+          {}},
          {"source", T::text, std::string{"arm"},
           "the system: \"arm\" (D q'' = tau - c - h of the robot at q, qd, tau), \"random\" (n x n from "
           "seed) or \"given\" (workload.a, workload.b)",

@@ -55,6 +55,26 @@ class EngineT : public EliminationPipeline::Engine {
 
 }  // namespace
 
+namespace {
+
+// Recovery (PipelineSettings::recovery) runs on strict, unbuffered steps with every level-2
+// processor L1's and L3's neighbour (no relays).
+void check_recovery(const PipelineSettings& s, const PipelineNodes& nodes,
+                    const network::Topology& topology) {
+  if (s.overlap || s.buffered)
+    throw SettingError({"workload.recovery", s.overlap ? "workload.overlap" : "workload.buffered"},
+                       "workload.recovery needs strict, unbuffered steps (overlap = false, "
+                       "buffered = false)");
+  auto neighbours = [&](int a, int b) { return topology.shortest_path(a, b).size() == 2; };
+  for (int e : nodes.e)
+    if (!neighbours(nodes.l1, e) || !neighbours(nodes.l3, e))
+      throw SettingError({"workload.recovery", kNetworkKey},
+                         "workload.recovery needs every level-2 processor wired to L1 and L3 (no "
+                         "fan-out X or fan-in Y: configs/topologies/elimination-m1..m3.toml)");
+}
+
+}  // namespace
+
 EliminationPipeline::EliminationPipeline(const PipelineSettings& settings,
                                          const elimination::LinearSystem<double>& system,
                                          const network::Topology& topology) {
@@ -75,6 +95,7 @@ EliminationPipeline::EliminationPipeline(const PipelineSettings& settings,
                                 : std::string("topologies ship for m = 1..5 "
                                               "(configs/topologies/elimination-m1..m5.toml)")));
   const PipelineNodes nodes = find_pipeline_nodes(topology, s.m);
+  if (s.recovery) check_recovery(s, nodes, topology);
   if (s.precision == t800::Precision::real64)
     engine_ = std::make_unique<EngineT<double>>(s, system, nodes);
   else

@@ -7,10 +7,17 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 #include "workloads/setting_error.hpp"
 
 #include <systemc>
+
+#include "network/alt.hpp"
+#include "network/reliable.hpp"
+#include "t800/link_timing.hpp"
+#include "t800/payload_bytes.hpp"
+#include "workloads/pipeline/checksum.hpp"
 
 #include "workloads/pipeline/costs.hpp"
 #include "workloads/pipeline/piece_code.hpp"
@@ -114,6 +121,32 @@ class PipelineProgram<T>::Levels {
     std::size_t index = 0;
   };
 
+  // Recovery's messages (PipelineSettings::recovery): each carries the step it belongs to and a
+  // checksum of its header word and REALs (checksum.hpp).
+  struct CheckedPivot {
+    int step = 0;
+    bool stop = false;     // the level-2 processor ends
+    bool forward = false;  // it passes the pivot row on to L3
+    Row<C> row;
+    C scale = C(0);
+    std::uint32_t checksum = 0;
+    std::uint32_t header() const { return std::uint32_t(step); }
+  };
+  struct CheckedRow {
+    int step = 0;
+    std::size_t index = 0;  // 1-based, in the step's reduced system
+    bool bad = false;       // its level-2 processor found its input damaged
+    Row<C> values;
+    std::uint32_t checksum = 0;
+    std::uint32_t header() const { return std::uint32_t(step * 256 + int(index)); }
+  };
+  // L3 to L1: resend these rows of the step (0: the pivot row) through other level-2 processors.
+  struct Resend {
+    std::vector<std::size_t> rows;
+    std::vector<int> lost;   // level-2 processors (0-based) L3 gave up on
+    std::vector<int> avoid;  // and those whose rows arrived damaged
+  };
+
  public:
   Levels(const PipelineSettings& s, const PipelineNodes& n, int unknowns)
       : settings(s), shape{unknowns, s.m}, nodes(n) {}
@@ -122,6 +155,9 @@ class PipelineProgram<T>::Levels {
     serve_ = serve;
     if (settings.overlap && serve != Serve::once)
       throw std::invalid_argument("elimination pipeline: overlap serves one system only");
+    if (settings.recovery && serve != Serve::once)
+      throw std::invalid_argument("elimination pipeline: recovery serves one system only");
+    register_payloads();
     input_ = &machine.channel("system", client, nodes.l1);
     plan_level1_side(machine);
     plan_level3_side(machine);
@@ -130,12 +166,20 @@ class PipelineProgram<T>::Levels {
     if (serve == Serve::until_finish) reply_ = &machine.channel("qdd", nodes.l4, client);
     const auto low = t800::Priority::low;
     for (int e = 0; e < shape.m; ++e) e_buffers_.push_back(std::make_unique<Shared>());
+    l1_failed_.assign(std::size_t(shape.m), false);
+    const t800::LinkTiming link(machine.options().link);
+    longest_message_us_ = 2 * link.arrival_ns(checked_bytes(std::size_t(n() + 2))) / 1000 + 10;
+    l1_unused_.assign(std::size_t(shape.m), false);
     machine.spawn(nodes.l1, "level1", low, [this](Process& p) { loop(p, &Levels::level1); });
     for (int e = 0; e < shape.m; ++e)
       machine.spawn(nodes.e[std::size_t(e)], "level2", low, [this, e](Process& p) {
+        if (settings.recovery) return level2_checked(p, e);
         loop(p, [e](Levels& l, Process& q) { return l.level2(q, e); });
       });
-    machine.spawn(nodes.l3, "level3", low, [this](Process& p) { loop(p, &Levels::level3); });
+    machine.spawn(nodes.l3, "level3", low, [this](Process& p) {
+      if (settings.recovery) return void(level3_checked(p));
+      loop(p, &Levels::level3);
+    });
     machine.spawn(nodes.l4, "level4", low, [this](Process& p) { loop(p, &Levels::level4); });
     declare_code(machine);
   }
@@ -366,7 +410,8 @@ class PipelineProgram<T>::Levels {
     std::iota(order.begin(), order.end(), 0);
     for (int k = 0; k < n(); ++k) {
       Rows<C>& m = matrices_[std::size_t(k)];
-      if (k > 0 && !next_matrix(p, k, limit)) return stop_level1(p, k);
+      if (k > 0 && !(settings.recovery ? next_matrix_checked(p, k) : next_matrix(p, k, limit)))
+        return stop_level1(p, k);
       outcome.step_start_us.push_back(p.now_us());
       auto step = run_piece(
           p, "pivot",
@@ -381,12 +426,21 @@ class PipelineProgram<T>::Levels {
       }
       outcome.pivot_rows.push_back(order[0]);
       if (step.interchanged) ++outcome.interchanges;
-      hand_out(p, k,
-               PivotMessage{true, false, false, std::move(step.normalised), k == 0 ? scale : C(0)},
-               m);
+      if (settings.recovery) {
+        pivot_ = CheckedPivot{k, false, false, std::move(step.normalised), k == 0 ? scale : C(0)};
+        hand_out_checked(p, k, all_rows(k), {});
+      } else {
+        hand_out(
+            p, k,
+            PivotMessage{true, false, false, std::move(step.normalised), k == 0 ? scale : C(0)}, m);
+      }
       ++handed_;
       l1_.notify();
       order.erase(order.begin());
+    }
+    if (settings.recovery) {
+      if (!next_matrix_checked(p, n())) return stop_level1(p, n());  // resends of the last step
+      stop_level2(p);
     }
     return true;
   }
@@ -394,6 +448,10 @@ class PipelineProgram<T>::Levels {
   bool stop_level1(Process& p, int k) {
     l1_stopped_ = true;
     l1_.notify();
+    if (settings.recovery) {
+      stop_level2(p);
+      return false;
+    }
     return send_stop(p, k, false);
   }
 
@@ -424,6 +482,8 @@ class PipelineProgram<T>::Levels {
       Rows<C>& m = matrices_[std::size_t(s)];
       for (int r = 0; r < n() - s; ++r) {
         auto row = std::any_cast<ReturnedRow>(p.in(*back_).payload);
+        if (row.index >= m.size())
+          p.stop("row number " + std::to_string(row.index) + " out of range");
         m[row.index] = std::move(row.values);
         ++arrived_[std::size_t(s)];
         l1_.notify();
@@ -620,26 +680,33 @@ class PipelineProgram<T>::Levels {
       Rows<C> rows(r);
       collect(p, k, pivot, unstable, rows);
       if (r == 0) continue;
-      const auto check = run_piece(
-          p, "check",
-          [&](auto& r, auto& b) { return elimination::check_step(r, b, settings.rule); },
-          named("rows", rows), named("bound", bound));
-      largest_ = std::max(largest_, elimination::largest_magnitude(rows));  // diagnostic only
-      if (check.status == Status::non_finite) {
-        fail(k, Status::non_finite,
-             "level 3: a non-finite value in row " + std::to_string(check.row + 1) + " of step " +
-                 std::to_string(k));
-        p.out(*back_, {kHeaderBytes, ReturnedRow{false, {}}, kFailLabel});
-        continue;  // L1 now stops everybody; E1's failed pivot row ends this loop
-      }
-      if (check.status == Status::unstable && !unstable) {
-        unstable = true;
-        first_unstable_ = k;
-      }
-      for (std::size_t i = 0; i < rows.size(); ++i)
-        p.out(*back_,
-              {reals(rows[i].size()), ReturnedRow{true, std::move(rows[i]), i}, "reduced row"});
+      // A non-finite value: L1 now stops everybody; E1's failed pivot row ends this loop.
+      return_reduced(p, k, rows, bound, unstable);
     }
+    return true;
+  }
+
+  // Step k's rows checked and, unless one is not finite (false: L1 is told to stop), sent back to
+  // L1 as the next step's matrix.
+  bool return_reduced(Process& p, int k, Rows<C>& rows, C bound, bool& unstable) {
+    const auto check = run_piece(
+        p, "check", [&](auto& r, auto& b) { return elimination::check_step(r, b, settings.rule); },
+        named("rows", rows), named("bound", bound));
+    largest_ = std::max(largest_, elimination::largest_magnitude(rows));  // diagnostic only
+    if (check.status == Status::non_finite) {
+      fail(k, Status::non_finite,
+           "level 3: a non-finite value in row " + std::to_string(check.row + 1) + " of step " +
+               std::to_string(k));
+      p.out(*back_, {kHeaderBytes, ReturnedRow{false, {}}, kFailLabel});
+      return false;
+    }
+    if (check.status == Status::unstable && !unstable) {
+      unstable = true;
+      first_unstable_ = k;
+    }
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      p.out(*back_,
+            {reals(rows[i].size()), ReturnedRow{true, std::move(rows[i]), i}, "reduced row"});
     return true;
   }
 
@@ -657,6 +724,8 @@ class PipelineProgram<T>::Levels {
       branches.push_back([&port, expected, &rows, &arrived](Process& q) {
         for (std::size_t count = expected.size(); count > 0; --count) {
           auto row = std::any_cast<RowMessage>(q.in(*port.channel).payload);
+          if (row.index < 1 || row.index > rows.size())
+            q.stop("row number " + std::to_string(row.index) + " out of range");
           rows[row.index - 1] = std::move(row.values);
           ++arrived[row.index - 1];
         }
@@ -684,6 +753,8 @@ class PipelineProgram<T>::Levels {
       branches.push_back([this, &port, expected, &rows, &ready](Process& q) {
         for (std::size_t count = expected.size(); count > 0; --count) {
           auto row = std::any_cast<RowMessage>(q.in(*port.channel).payload);
+          if (row.index < 1 || row.index > rows.size())
+            q.stop("row number " + std::to_string(row.index) + " out of range");
           rows[row.index - 1] = std::move(row.values);
           ready.push_back(row.index - 1);
           l3_.notify();
@@ -776,6 +847,375 @@ class PipelineProgram<T>::Levels {
   bool l1_stopped_ = false;  // L1 gave up before handing out step handed_
   Shared l1_, l3_;
   std::vector<std::unique_ptr<Shared>> e_buffers_;  // buffered level 2: one per processor
+  // recovery
+  CheckedPivot pivot_;             // L1's pivot row of the step it is in
+  std::vector<bool> l1_failed_;    // level-2 processors L1's output to failed
+  std::vector<bool> l1_unused_;    // and those L1 no longer gives rows (failed, or given up by L3)
+  std::vector<bool> l3_lost_;      // level-2 processors L3 no longer listens to
+  int resends_ = 0;                // rows resent
+  double longest_message_us_ = 0;  // twice the longest message's time on a link, and 10 us
+
+  // ---- recovery (PipelineSettings::recovery) ----
+
+  std::int64_t checked_bytes(std::size_t count) const { return reals(count) + 4; }
+  std::int64_t pivot_bytes(const CheckedPivot& m) const {
+    const std::size_t extra = m.step == 0 && settings.rule.growth_check() ? 1 : 0;  // the scale
+    return checked_bytes(m.row.size() + extra);
+  }
+  static std::uint32_t sum_of(const CheckedPivot& m) {
+    std::uint32_t sum = checksum(m.header(), m.row);
+    add_words(sum, m.scale.value());
+    return sum;
+  }
+  static std::uint32_t sum_of(const CheckedRow& m) {
+    return checksum(m.header() + (m.bad ? 0x80000000u : 0u), m.values);
+  }
+  // The checksum loop over a message of `count` REALs and its header, on p's processor.
+  void charge_checksum(Process& p, std::size_t count) {
+    const std::int64_t words = 1 + std::int64_t(count) * (real_bytes(settings.precision) / 4);
+    p.compute(p.machine().compute_model(p.node()).process_cycles(checksum_code(words)), "checksum");
+  }
+  // L1's outputs wait for a level-2 processor that may itself be waiting, up to the timeout, for
+  // level 3 to take its output; twice the timeout, and L1 gives it up.
+  double l1_deadline(const Process& p) const { return p.now_us() + 2 * settings.timeout_us; }
+  // Step k's pivot row (0) and rows 1 .. n - 1 - k.
+  std::vector<std::size_t> all_rows(int k) const {
+    std::vector<std::size_t> rows;
+    for (int i = 0; i <= n() - 1 - k; ++i) rows.push_back(std::size_t(i));
+    return rows;
+  }
+  std::vector<int> path_through(int e) const {
+    return {nodes.l1, nodes.e[std::size_t(e)], nodes.l3};
+  }
+
+  // L1: step k's `rows` (of matrices_[k]; 0 = the pivot row, for L3) through the level-2
+  // processors it still uses, avoiding `avoid` if it can. First handing-out: the round-robin of
+  // the shape while no processor has failed; a resend, or after a failure: round-robin over the
+  // others. The pivot row goes to each that gets rows, and to the first, which forwards it to L3.
+  void hand_out_checked(Process& p, int k, std::vector<std::size_t> rows,
+                        const std::vector<int>& avoid) {
+    std::vector<int> live, preferred;
+    for (int e = 0; e < shape.m; ++e)
+      if (!l1_unused_[std::size_t(e)]) live.push_back(e);
+    for (int e : live)
+      if (std::find(avoid.begin(), avoid.end(), e) == avoid.end()) preferred.push_back(e);
+    if (!preferred.empty()) live = preferred;
+    if (live.empty()) return;  // nobody left: level 3 gives up
+    const bool forward = std::find(rows.begin(), rows.end(), 0) != rows.end();
+    rows.erase(std::remove(rows.begin(), rows.end(), 0), rows.end());
+    const bool as_shaped =
+        avoid.empty() && std::find(l1_unused_.begin(), l1_unused_.end(), true) == l1_unused_.end();
+    std::vector<std::vector<std::size_t>> given(std::size_t(shape.m));
+    for (std::size_t j = 0; j < rows.size(); ++j)
+      given[std::size_t(as_shaped ? shape.owner(rows[j]) : live[j % live.size()])].push_back(
+          rows[j]);
+    pivot_.step = k;
+    pivot_.checksum = sum_of(pivot_);
+    charge_checksum(p, pivot_.row.size() + 1);
+    std::vector<Process::Body> branches;
+    for (int e : live) {
+      const bool forwarder = forward && e == live.front();
+      if (given[std::size_t(e)].empty() && !forwarder) continue;
+      branches.push_back([this, e, k, forwarder, &given](Process& q) {
+        CheckedPivot pivot = pivot_;
+        pivot.forward = forwarder;
+        network::Channel& c = *e_in_[std::size_t(e)];
+        if (!network::out_or_fail(q, c, {pivot_bytes(pivot), pivot, "pivot row"}, l1_deadline(q)))
+          return lose_from_l1(e);
+        for (std::size_t i : given[std::size_t(e)]) {
+          CheckedRow row{k, i, false, matrices_[std::size_t(k)][i], 0};
+          row.checksum = sum_of(row);
+          charge_checksum(q, row.values.size());
+          if (!network::out_or_fail(q, c, {checked_bytes(row.values.size()), row, "row"},
+                                    l1_deadline(q)))
+            return lose_from_l1(e);
+        }
+      });
+    }
+    par(p, branches);
+  }
+
+  void lose_from_l1(int e) {
+    l1_failed_[std::size_t(e)] = true;
+    l1_unused_[std::size_t(e)] = true;
+  }
+
+  // L1: step k's matrix from L3, serving L3's requests to resend step k - 1's rows first.
+  bool next_matrix_checked(Process& p, int k) {
+    for (;;) {
+      t800::Message m = p.in(*back_);
+      if (const auto* request = std::any_cast<Resend>(&m.payload)) {
+        for (int e : request->lost) l1_unused_[std::size_t(e)] = true;
+        resends_ += int(request->rows.size());
+        hand_out_checked(p, k - 1, request->rows, request->avoid);
+        continue;
+      }
+      auto first = std::any_cast<ReturnedRow>(std::move(m.payload));
+      if (!first.ok) return false;
+      if (k == n()) return true;  // L3's word that the last step is complete
+      Rows<C>& reduced = matrices_[std::size_t(k)];
+      reduced = {std::move(first.values)};
+      for (int i = 1; i < n() - k; ++i) {
+        auto row = std::any_cast<ReturnedRow>(p.in(*back_).payload);
+        if (!row.ok) return false;
+        reduced.push_back(std::move(row.values));
+      }
+      return true;
+    }
+  }
+
+  // L1: every level-2 processor ends, also one L1 gave up (it may only have been slow). One that
+  // does not take its stop is unreachable: a fault nothing depended on any more.
+  void stop_level2(Process& p) {
+    std::vector<Process::Body> branches;
+    for (int e = 0; e < shape.m; ++e)
+      branches.push_back([this, e](Process& q) {
+        CheckedPivot stop;
+        stop.stop = true;
+        if (network::out_or_fail(q, *e_in_[std::size_t(e)], {kHeaderBytes, stop, "stop"},
+                                 l1_deadline(q)))
+          return;
+        network::Machine& m = q.machine();
+        const std::vector<int> path{nodes.l1, nodes.e[std::size_t(e)]};
+        if (m.faults().detected(m, path, "level 1 (its stop was not taken)") > 0)
+          m.faults().recovered(m, path, "none needed: the solve no longer depended on it");
+      });
+    par(p, branches);
+  }
+
+  // A level-2 processor: checks each message's checksum, eliminates the intact rows with an intact
+  // pivot row, marks the others damaged, and sends every row on with its own checksum. An output
+  // level 3 does not take within the timeout is given up (level 3 asks for the row again), so the
+  // processor always comes back to take what L1 sends.
+  void level2_checked(Process& p, int e) {
+    network::Channel& in = *e_in_[std::size_t(e)];
+    network::Channel& out = *e_out_[std::size_t(e)];
+    auto send = [&](t800::Message m) {
+      network::out_or_fail(p, out, std::move(m), p.now_us() + settings.timeout_us);
+    };
+    // L1 may give up a message half-way (this processor was slow, or a fault): each message says
+    // what it is, so a pivot row may come where a row was due.
+    CheckedPivot pivot;
+    bool pivot_intact = false;
+    for (;;) {
+      t800::Message m = p.in(in);
+      if (const auto* next = std::any_cast<CheckedPivot>(&m.payload)) {
+        pivot = *next;
+        if (pivot.stop) return;
+        note_level2(p.now_us(), true);
+        charge_checksum(p, pivot.row.size() + 1);
+        pivot_intact = sum_of(pivot) == pivot.checksum;
+        if (pivot.forward) send({pivot_bytes(pivot), pivot, "pivot row"});
+        continue;
+      }
+      const auto& row = std::any_cast<const CheckedRow&>(m.payload);
+      charge_checksum(p, row.values.size());
+      CheckedRow done{row.step, row.index, true, {}, 0};
+      if (pivot_intact && row.step == pivot.step && sum_of(row) == row.checksum) {
+        done.bad = false;
+        done.values = run_piece(
+            p, "eliminate", [](auto& x, auto& j1) { return elimination::eliminate(x, j1); },
+            named("row", row.values), named("pivot", pivot.row));
+        charge_checksum(p, done.values.size());
+      }
+      done.checksum = sum_of(done);
+      send({checked_bytes(done.values.size()), done, "row"});
+      note_level2(p.now_us(), false);
+    }
+  }
+
+  // Level 3: each step's pivot row and rows, checked, with resends of what is missing or damaged;
+  // then as in strict steps. A step it cannot complete ends the pipeline (Status::lost).
+  bool level3_checked(Process& p) {
+    l3_lost_.assign(std::size_t(shape.m), false);
+    C bound = C(0);
+    bool unstable = false;
+    for (int k = 0; k < n(); ++k) {
+      const std::size_t r = std::size_t(n() - 1 - k);
+      CheckedPivot pivot;
+      Rows<C> rows(r);
+      if (!collect_checked(p, k, pivot, rows)) {
+        fail(k, Status::lost,
+             "level 3: step " + std::to_string(k) + "'s rows did not all arrive intact after " +
+                 std::to_string(shape.m + 1) +
+                 " requests in a row to resend them (a fault no other level-2 processor could get "
+                 "round, or workload.recovery_timeout_us shorter than the pipeline's own pauses)");
+        p.out(*back_, {kHeaderBytes, ReturnedRow{false, {}}, kFailLabel});
+        p.out(*to_l4_, {kHeaderBytes, PivotMessage::stop(false), kFailLabel});
+        return false;
+      }
+      PivotMessage u{true, false, unstable, pivot.row, pivot.scale};
+      p.out(*to_l4_, {reals(u.row.size()), u, "U row"});
+      if (k == 0 && settings.rule.growth_check())
+        bound = run_piece(
+            p, "bound", [&](auto& s) { return elimination::growth_bound(s, settings.rule); },
+            named("scale", pivot.scale));
+      if (r > 0 && !return_reduced(p, k, rows, bound, unstable)) {
+        p.out(*to_l4_, {kHeaderBytes, PivotMessage::stop(false), kFailLabel});
+        return false;
+      }
+    }
+    p.out(*back_, {kHeaderBytes, ReturnedRow{true, {}, 0}, "done"});  // L1 resends no more
+    return true;
+  }
+
+  // Step k's messages until every row (and the pivot row) is in intact, asking L1 to resend what
+  // is not; it gives up after m + 1 requests in a row that brought nothing.
+  bool collect_checked(Process& p, int k, CheckedPivot& pivot, Rows<C>& rows) {
+    std::vector<bool> have(rows.size() + 1, false);  // [0]: the pivot row
+    int idle = 0;                                    // resend rounds in a row that brought nothing
+    std::optional<Resend> request;
+    for (int round = 0;; ++round) {
+      std::vector<int> damaged;
+      const auto before = std::count(have.begin(), have.end(), true);
+      // The request goes to L1 while the rows still coming are taken: L1 may be waiting for a
+      // level-2 processor that waits for level 3.
+      // The first wait of a step is longer: L1 has a pivot to find before it sends anything.
+      const double first_wait_us = (round == 0 ? 4 : 1) * settings.timeout_us;
+      auto receive = [&](Process& q) {
+        receive_step(q, k, pivot, rows, have, damaged, first_wait_us);
+      };
+      if (request) {
+        const std::int64_t words =
+            std::int64_t(request->rows.size() + request->lost.size() + request->avoid.size()) + 1;
+        par(p, {[&](Process& q) { q.out(*back_, {4 * words, *request, "resend"}); }, receive});
+      } else {
+        receive(p);
+      }
+      idle = std::count(have.begin(), have.end(), true) > before ? 0 : idle + 1;
+      std::vector<std::size_t> missing;
+      for (std::size_t i = 0; i < have.size(); ++i)
+        if (!have[i]) missing.push_back(i);
+      network::Machine& machine = p.machine();
+      if (missing.empty()) {
+        if (round > 0)
+          for (int e = 0; e < shape.m; ++e)
+            machine.faults().recovered(machine, path_through(e),
+                                       "level 1 resent step " + std::to_string(k) +
+                                           "'s rows through other level-2 processors");
+        return true;
+      }
+      const std::string what = std::to_string(missing.size()) + " of step " + std::to_string(k) +
+                               "'s messages " +
+                               (damaged.empty() ? "missing" : "damaged or missing");
+      for (int e = 0; e < shape.m; ++e)
+        machine.faults().detected(machine, path_through(e),
+                                  "level 3 (" + what + ": checksum, ALT timeout)");
+      if (idle > shape.m) return false;
+      request = Resend{missing, {}, damaged};
+      for (int e = 0; e < shape.m; ++e)
+        if (l3_lost_[std::size_t(e)]) request->lost.push_back(e);
+    }
+  }
+
+  // Level 3's ALT over the level-2 processors it still listens to, with a timer guard that ends
+  // the wait settings.timeout_us after the last message (first_wait_us after the start); a
+  // message that stops half-way (InputOrFail) is given up with its processor.
+  void receive_step(Process& p, int k, CheckedPivot& pivot, Rows<C>& rows, std::vector<bool>& have,
+                    std::vector<int>& damaged, double first_wait_us) {
+    const auto ticks = std::int64_t(std::ceil(settings.timeout_us / p.tick_us()));
+    std::int64_t after = p.clock() + std::int64_t(std::ceil(first_wait_us / p.tick_us()));
+    while (std::find(have.begin(), have.end(), false) != have.end()) {
+      std::vector<network::Guard> guards;
+      for (int e = 0; e < shape.m; ++e)
+        guards.push_back(
+            {network::Guard::Kind::input, e_out_[std::size_t(e)], 0, !l3_lost_[std::size_t(e)]});
+      guards.push_back({network::Guard::Kind::timer, nullptr, after, true});
+      const int g = network::alternate(p, guards);
+      if (g == shape.m) return;  // the timer: nothing more is coming
+      // A message that has started arrives within its time on the wire, unless a fault stops it.
+      auto m = network::in_or_fail(p, *e_out_[std::size_t(g)], p.now_us() + longest_message_us_);
+      if (!m) {
+        l3_lost_[std::size_t(g)] = true;
+        continue;
+      }
+      after = p.clock() + ticks;
+      if (const auto* piv = std::any_cast<CheckedPivot>(&m->payload)) {
+        if (piv->step != k) continue;  // a late message of an earlier step
+        charge_checksum(p, piv->row.size() + 1);
+        if (sum_of(*piv) != piv->checksum) {
+          damaged.push_back(g);
+          continue;
+        }
+        pivot = *piv;
+        have[0] = true;
+        continue;
+      }
+      const auto& row = std::any_cast<const CheckedRow&>(m->payload);
+      if (row.step != k) continue;
+      charge_checksum(p, row.values.size());
+      if (row.bad || sum_of(row) != row.checksum || row.index < 1 || row.index > rows.size()) {
+        damaged.push_back(g);
+        continue;
+      }
+      rows[row.index - 1] = row.values;
+      have[row.index] = true;
+    }
+  }
+
+  // How each message's value changes when a byte of it arrives changed (a corrupting link
+  // fault): the header word, the REALs (little-endian words, as the T800 stores them), the
+  // checksum. A header of a message without a step (the original protocol's flags) is not
+  // modelled.
+  static void register_payloads() {
+    using t800::flip_byte;
+    constexpr std::int64_t size = sizeof(T);
+    auto flip_reals = [](Row<C>& values, std::int64_t byte, std::uint8_t mask) {
+      const std::size_t i = std::size_t(byte / size);
+      if (i >= values.size()) return false;
+      values[i] = C(flip_byte(values[i].value(), byte % size, mask));
+      return true;
+    };
+    // A row: its number in the header word, then its REALs.
+    auto row_flip = [=](auto* type) {
+      using Message = std::remove_pointer_t<decltype(type)>;
+      return [=](std::any& a, std::int64_t b, std::uint8_t x) {
+        auto& m = std::any_cast<Message&>(a);
+        if (b >= kHeaderBytes) return flip_reals(m.values, b - kHeaderBytes, x);
+        m.index = std::size_t(flip_byte(std::uint32_t(m.index), b, x));
+        return true;
+      };
+    };
+    t800::register_payload_bytes(typeid(RowMessage), row_flip(static_cast<RowMessage*>(nullptr)));
+    t800::register_payload_bytes(typeid(ReturnedRow), row_flip(static_cast<ReturnedRow*>(nullptr)));
+    t800::register_payload_bytes(
+        typeid(PivotMessage), [=](std::any& a, std::int64_t b, std::uint8_t x) {
+          auto& m = std::any_cast<PivotMessage&>(a);
+          return b >= kHeaderBytes && flip_reals(m.row, b - kHeaderBytes, x);
+        });
+    t800::register_payload_bytes(
+        typeid(CheckedRow), [=](std::any& a, std::int64_t b, std::uint8_t x) {
+          auto& m = std::any_cast<CheckedRow&>(a);
+          const std::int64_t end = kHeaderBytes + size * std::int64_t(m.values.size());
+          if (b < kHeaderBytes) {
+            const std::uint32_t header = flip_byte(m.header(), b, x);
+            m.step = int(header / 256);
+            m.index = header % 256;
+          } else if (b < end) {
+            flip_reals(m.values, b - kHeaderBytes, x);
+          } else {
+            m.checksum = flip_byte(m.checksum, b - end, x);
+          }
+          return true;
+        });
+    t800::register_payload_bytes(
+        typeid(CheckedPivot), [=](std::any& a, std::int64_t b, std::uint8_t x) {
+          auto& m = std::any_cast<CheckedPivot&>(a);
+          const std::int64_t reals_end = kHeaderBytes + size * std::int64_t(m.row.size());
+          if (b < kHeaderBytes) {
+            m.step = int(flip_byte(m.header(), b, x));
+          } else if (b < reals_end) {
+            flip_reals(m.row, b - kHeaderBytes, x);
+          } else if (m.step == 0 && b < reals_end + size) {
+            m.scale = C(flip_byte(m.scale.value(), b - reals_end, x));
+          } else {
+            const std::int64_t at = b - reals_end - (m.step == 0 ? size : 0);
+            if (at < 0 || at >= 4) return false;
+            m.checksum = flip_byte(m.checksum, at, x);
+          }
+          return true;
+        });
+  }
 };
 
 template <class T>

@@ -32,6 +32,13 @@ struct PipelineSettings {
   // comes in and the previous one goes out while a row is eliminated. false = one process that
   // takes a row, eliminates it and sends it on before it takes the next.
   bool buffered = false;
+  // Recovery (strict, unbuffered steps, every level-2 processor L1's and L3's neighbour): every
+  // message out of L1 and level 2 carries a checksum; level 2 marks a row whose input was damaged,
+  // level 3 waits for a step's rows in an ALT with a timer guard, and asks L1 to resend what is
+  // missing or damaged through another level-2 processor. L1's outputs give up at a deadline
+  // (OutputOrFail), and a level-2 processor that failed is not used again.
+  bool recovery = false;
+  double timeout_us = 1000;  // how long L1 and L3 wait for the next message of a step
 };
 
 // What one round produced, as the levels saw it.

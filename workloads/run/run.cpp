@@ -121,6 +121,58 @@ ResultValue setting_value(const RunSetting& s) {
   return v;
 }
 
+// Processes a fault left waiting for ever are the fault's (its record lists them); the others, if
+// any, are a deadlock. A fault that took effect unrecovered means the results are not results.
+void account_faults(const network::Machine& machine, RunReport& report) {
+  report.faults = machine.faults().records();
+  if (report.faults.empty()) return;
+  std::vector<network::BlockedProcess> deadlocked;
+  for (const network::BlockedProcess& b : report.blocked) {
+    int fault = -1;
+    for (const auto& p : machine.processes())
+      if (p->name() == b.process && machine.node_name(p->node()) == b.processor && !p->ended())
+        fault = network::stranding_fault(machine, *p);
+    if (fault < 0)
+      deadlocked.push_back(b);
+    else
+      report.faults[std::size_t(fault)].stranded.push_back(b.process + " on " + b.processor);
+  }
+  if (deadlocked.empty()) report.wait_cycle.clear();
+  report.blocked = deadlocked;
+}
+
+std::string unrecovered_fault(const RunReport& report) {
+  for (const network::FaultRecord& f : report.faults)
+    if (f.fired && f.recovered_how.empty())
+      return "fault " + f.describe() + " (" + f.hit + ") was " +
+             (f.detected_by.empty() ? "not detected" : "detected by " + f.detected_by) +
+             " and not recovered: the results are not results";
+  return "";
+}
+
+ResultValue fault_value(const network::FaultRecord& f) {
+  ResultValue r;
+  r.set("kind", std::string(network::to_string(f.spec.kind)));
+  r.set("where", f.spec.where());
+  r.set("when_us", f.spec.at_us);
+  r.set("took_effect", f.fired);
+  if (f.fired) {
+    r.set("took_effect_us", f.fired_us);
+    r.set("hit", f.hit);
+  }
+  r.set("detected_by", f.detected_by);
+  if (f.detected_us >= 0) r.set("detected_us", f.detected_us);
+  r.set("recovered_how", f.recovered_how);
+  if (f.recovered_us >= 0) {
+    r.set("recovered_us", f.recovered_us);
+    r.set("cost_us", f.cost_us());
+  }
+  ResultValue stranded = ResultValue::list();
+  for (const std::string& p : f.stranded) stranded.push(p);
+  r.set("stranded", stranded);
+  return r;
+}
+
 }  // namespace
 
 std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& in) {
@@ -133,6 +185,8 @@ std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInp
 RunReport run(const RunInputs& in) {
   const auto start = std::chrono::steady_clock::now();
   network::Machine machine(in.topology, in.options);
+  for (const network::FaultSpec& f : in.faults) machine.faults().add(f);
+  network::arm_faults(machine);
   std::unique_ptr<Workload> workload = build_workload(machine, in);
   RunReport report;
   report.name = in.name;
@@ -148,9 +202,13 @@ RunReport run(const RunInputs& in) {
   report.processors = processor_reports(machine, report.simulated_us);
   report.links = link_reports(machine, report.simulated_us);
   if (in.options.keep_intervals) report.tracks = trace_tracks(machine, report);
+  account_faults(machine, report);
   if (report.blocked.empty() && report.limit == network::Limit::none) {
-    report.workload = workload->results(machine);
-    report.failure = failure_of(report.workload);
+    report.failure = unrecovered_fault(report);
+    if (report.failure.empty()) {
+      report.workload = workload->results(machine);
+      report.failure = failure_of(report.workload);
+    }
   }
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
@@ -212,6 +270,11 @@ ResultValue RunReport::to_value() const {
   }
   v.set("links", links_value);
   if (!failure.empty()) v.set("failure", failure);
+  if (!faults.empty()) {
+    ResultValue list = ResultValue::list();
+    for (const network::FaultRecord& f : faults) list.push(fault_value(f));
+    v.set("faults", list);
+  }
   if (limit != network::Limit::none)
     v.set("stopped_by", limit == network::Limit::sim_time ? "max_sim_time" : "max_wall_time");
   if (!blocked.empty()) {

@@ -24,6 +24,7 @@ struct RunInputs {
   Placement placement;                                // the scene's [placement]
   // Where options.precision came from, said in the report: a default is stated, never silent.
   std::string precision_source = "the simulator's default";
+  std::vector<network::FaultSpec> faults;  // injected into the run (network/faults.hpp)
 };
 
 // What ran, on what: every report states it, defaults included.
@@ -85,12 +86,16 @@ struct RunReport {
   std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
   std::vector<std::string> wait_cycle;           // the deadlock's cycle of waits, when there is one
   network::Limit limit = network::Limit::none;   // a limit stopped the run: no workload results
-  // Non-empty: the run ended but its results are not results: the workload reported a failure (a solve
-  // without a usable pivot) or a number came out NaN or infinite (REAL32 overflow). Says which.
+  // Non-empty: the run ended but its results are not results: the workload reported a failure (a
+  // solve without a usable pivot) or a number came out NaN or infinite (REAL32 overflow). Says
+  // which.
   std::string failure;
   ResultValue workload;
   std::vector<TraceTrack>
       tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)
+  // What each injected fault did; processes a fault left waiting for ever are listed there, not
+  // as a deadlock. A fault that took effect and was not recovered makes the run a failure.
+  std::vector<network::FaultRecord> faults;
 
   ResultValue to_value() const;
 };

@@ -1,0 +1,84 @@
+#include "network/reliable.hpp"
+
+#include "network/channel.hpp"
+#include "network/machine.hpp"
+#include "network/process.hpp"
+
+namespace network {
+
+namespace {
+
+using t800::isa::Op;
+const t800::isa::MemoryRef kWorkspace{t800::isa::Region::workspace, -1};
+
+sc_core::sc_time at_us(double us) {
+  return sc_core::sc_time(us, sc_core::SC_US);
+}
+
+// The deadline: TIMER ? now, now PLUS timeout, kept in the workspace.
+void set_deadline(Process& p) {
+  p.run_instructions({{Op::ldtimer, 0, 0, false, {}, "TIMER ? now"},
+                      {Op::ldl, 1, 0, false, kWorkspace, "timeout"},
+                      {Op::sum, 0, 0, false, {}, "deadline"},
+                      {Op::stl, 1, 0, false, kWorkspace, "deadline"}});
+}
+
+void reset_channel(Process& p) {
+  p.run_instructions({{Op::ldl, 1, 0, false, kWorkspace, "channel"},
+                      {Op::resetch, 0, 0, false, {}, "reset the link channel"}});
+}
+
+// The process's status and wait, as Process::out and in keep them, for deadlock reports.
+template <class Body>
+auto communicating(Process& p, Channel& c, bool output, Body body) {
+  p.set_status(std::string(output ? "out" : "in") + " (or fail) on channel " + c.name);
+  (output ? c.last_writer : c.last_reader) = &p;
+  auto result = body();
+  p.set_status("running");
+  return result;
+}
+
+}  // namespace
+
+bool out_or_fail(Process& p, Channel& c, t800::Message m, double deadline_us) {
+  if (c.kind != Channel::Kind::direct) {
+    p.out(c, std::move(m));
+    return true;
+  }
+  set_deadline(p);
+  const bool done = communicating(p, c, true, [&] {
+    p.communicate(m.bytes, false);
+    p.deschedule();
+    const bool sent = c.link->transmit(c.writer_end, std::move(m), at_us(deadline_us));
+    p.reschedule();
+    return sent;
+  });
+  if (!done) reset_channel(p);
+  return done;
+}
+
+std::optional<t800::Message> in_or_fail(Process& p, Channel& c, double deadline_us) {
+  if (c.kind == Channel::Kind::internal) return p.in(c);
+  set_deadline(p);
+  auto received = communicating(p, c, false, [&]() -> std::optional<t800::Message> {
+    p.communicate(0, false);
+    p.deschedule();
+    std::optional<t800::Message> m;
+    if (c.kind == Channel::Kind::direct) {
+      m = c.link->receive(1 - c.writer_end, at_us(deadline_us));
+    } else {
+      while (c.mailbox.empty() && sc_core::sc_time_stamp() < at_us(deadline_us))
+        sc_core::wait(at_us(deadline_us) - sc_core::sc_time_stamp(), c.mail);
+      if (!c.mailbox.empty()) {
+        m = std::move(c.mailbox.front());
+        c.mailbox.pop_front();
+      }
+    }
+    p.reschedule();
+    return m;
+  });
+  if (!received) reset_channel(p);
+  return received;
+}
+
+}  // namespace network
