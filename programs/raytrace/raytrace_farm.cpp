@@ -9,11 +9,11 @@
 // takes results as they come and answers each with the next line. Credits tell each router how
 // many lines its worker and each of its subtrees can take: two per worker (the line it traces and
 // the one buffered), one back with every result.
-#include <cstring>
 #include <optional>
 #include <variant>
 
 #include "farm_tree.hpp"
+#include "programs/support/checksum.hpp"
 #include "scene.hpp"
 #include "t800sim/alt.hpp"
 #include "t800sim/workload.hpp"
@@ -55,22 +55,6 @@ bool is_stop(const value_of<Result>& v) {
 
 std::string member(const char* group, int i) {
   return std::string(group) + "[" + std::to_string(i) + "]";
-}
-
-// FNV-1a over the colours' bits: one number that differs if any pixel does.
-std::string checksum(const std::vector<float>& values) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (float v : values) {
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &v, sizeof bits);
-    for (int b = 0; b < 4; ++b) {
-      h ^= (bits >> (8 * b)) & 0xffu;
-      h *= 1099511628211ull;
-    }
-  }
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-  return text;
 }
 
 class RaytraceFarm : public Program {
@@ -121,7 +105,7 @@ class RaytraceFarm : public Program {
     r.set("workers", std::int64_t(tree_.workers()));
     r.set("tp_us", end_us_ - start_us_);
     r.set("tp_ms", (end_us_ - start_us_) / 1000.0);
-    r.set("image_checksum", checksum(image_));
+    r.set("image_checksum", programs::fnv1a_hex(image_));
     double compute_us = 0;
     std::int64_t fewest = line_cycles_.empty() ? 0 : line_cycles_.front(), most = fewest;
     ResultValue cycles = ResultValue::list();

@@ -17,11 +17,10 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <optional>
 #include <type_traits>
 
+#include "programs/support/checksum.hpp"
 #include "programs/systolic/block_product.hpp"
 #include "t800sim/workload.hpp"
 
@@ -199,20 +198,14 @@ class Systolic : public Program {
     return worst;
   }
 
-  // FNV-1a (64 bit) over C's elements as REAL32 bytes, row-major over the whole matrix.
+  // The checksum of C, row-major over the whole matrix (programs/support/checksum.hpp).
   std::string checksum() const {
-    std::uint64_t h = 14695981039346656037ull;
+    std::vector<float> c;  // C row-major over the whole matrix, as REAL32
     for (std::size_t row = 0; row < n_; ++row)
-      for (std::size_t col = 0; col < n_; ++col) {
-        const float v =
-            float(c_[std::size_t(cell(int(row / b_), int(col / b_)))][(row % b_) * b_ + col % b_]);
-        unsigned char bytes[4];
-        std::memcpy(bytes, &v, 4);
-        for (unsigned char byte : bytes) h = (h ^ byte) * 1099511628211ull;
-      }
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-    return text;
+      for (std::size_t col = 0; col < n_; ++col)
+        c.push_back(
+            float(c_[std::size_t(cell(int(row / b_), int(col / b_)))][(row % b_) * b_ + col % b_]));
+    return programs::fnv1a_hex(c);
   }
 
   int g_;
