@@ -3,6 +3,7 @@
 
 #include "network/config_error.hpp"
 #include "tools/commands.hpp"
+#include "tools/unwound_frames.hpp"
 
 namespace tools {
 
@@ -25,6 +26,7 @@ void run_command(const std::function<int()>& body) {
   try {
     code = body();
   } catch (const std::exception&) {
+    forget_unwound_frames();
     const CommandError error = command_error(std::current_exception());
     std::cerr << error.message << "\n";
     code = error.code;

@@ -9,6 +9,7 @@
 
 #include "tools/cli_errors.hpp"
 #include "tools/commands.hpp"
+#include "tools/unwound_frames.hpp"
 
 int sc_main(int argc, char* argv[]) {
   CLI::App app{
@@ -27,6 +28,7 @@ int sc_main(int argc, char* argv[]) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    tools::forget_unwound_frames();
     if (const auto message =
             tools::explain_parse_error(app, std::vector<std::string>(argv + 1, argv + argc), e)) {
       std::cerr << "error: " << *message << "\n";
@@ -35,6 +37,7 @@ int sc_main(int argc, char* argv[]) {
     const int code = app.exit(e);
     return code == 0 ? tools::kExitOk : tools::kExitBadInput;
   } catch (const tools::CommandExit& e) {
+    tools::forget_unwound_frames();
     return e.code;
   }
   return tools::kExitOk;
