@@ -5,6 +5,7 @@
 #include "network/channel.hpp"
 #include "network/machine.hpp"
 #include "network/process.hpp"
+#include "network/reliable.hpp"
 #include "t800sim/kernel.hpp"
 
 namespace t800sim {
@@ -40,11 +41,20 @@ std::int64_t Process::cycles(const Kernel& kernel) const {
 }
 
 void Process::Wire::send(std::int64_t bytes, std::any value) {
-  process_.out(channel_, {bytes, std::move(value), channel_.name});
+  if (failed_) return;
+  t800::Message m{bytes, std::move(value), channel_.name};
+  if (deadline_us_ < 0)
+    process_.out(channel_, std::move(m));
+  else
+    failed_ = !network::out_or_fail(process_, channel_, std::move(m), deadline_us_);
 }
 
 std::any Process::Wire::receive() {
-  return process_.in(channel_).payload;
+  if (failed_) return {};
+  if (deadline_us_ < 0) return process_.in(channel_).payload;
+  auto m = network::in_or_fail(process_, channel_, deadline_us_);
+  failed_ = !m;
+  return m ? std::move(m->payload) : std::any{};
 }
 
 void Process::check_end(const detail::ChannelSlot* slot, bool writing) const {
@@ -60,9 +70,9 @@ void Process::check_end(const detail::ChannelSlot* slot, bool writing) const {
                            impl_.machine().node_name(end));
 }
 
-Process::Wire Process::open(const detail::ChannelSlot* slot, bool writing) {
+Process::Wire Process::open(const detail::ChannelSlot* slot, bool writing, double deadline_us) {
   check_end(slot, writing);
-  return Wire(impl_, *slot->impl);
+  return Wire(impl_, *slot->impl, deadline_us);
 }
 
 void Process::par(const std::vector<Body>& branches) {

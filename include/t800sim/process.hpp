@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,27 @@ class Process {
     return in(c.in());
   }
 
+  // occam's OutputOrFail.t / InputOrFail.t (INMOS's reliable-link library): the communication
+  // gives up at `deadline_us` (simulated time, in us) and resets the link channel, so the process
+  // goes on and the program can recover from a dead link or a halted partner. Costed with the
+  // library's instructions (the timer read for the deadline, resetch when it gives up). On an
+  // internal channel they communicate as out / in (both ends on one processor cannot fail); on a
+  // routed channel the output fails only if the first hop does not take it. A protocol's items
+  // each have the same deadline; after one fails the rest are not sent.
+  template <class P>
+  bool out_or_fail(const Out<P>& c, const value_of<P>& v, double deadline_us) {
+    auto wire = open(c.slot(), true, deadline_us);
+    protocol<P>::send(wire, v);
+    return !wire.failed();
+  }
+  template <class P>
+  std::optional<value_of<P>> in_or_fail(const In<P>& c, double deadline_us) {
+    auto wire = open(c.slot(), false, deadline_us);
+    value_of<P> v = protocol<P>::receive(wire);
+    if (wire.failed()) return std::nullopt;
+    return v;
+  }
+
   // PAR: the branches run as processes on this processor; returns when all have ended.
   void par(const std::vector<Body>& branches);
   // PAR i = 0 FOR n
@@ -92,16 +114,20 @@ class Process {
   // One end of a channel as a protocol's communications see it.
   class Wire final : public detail::Wire {
    public:
-    Wire(network::Process& process, network::Channel& channel)
-        : process_(process), channel_(channel) {}
+    // deadline_us < 0: no deadline (out / in).
+    Wire(network::Process& process, network::Channel& channel, double deadline_us)
+        : process_(process), channel_(channel), deadline_us_(deadline_us) {}
     void send(std::int64_t bytes, std::any value) override;
     std::any receive() override;
+    bool failed() const override { return failed_; }
 
    private:
     network::Process& process_;
     network::Channel& channel_;
+    double deadline_us_;
+    bool failed_ = false;
   };
-  Wire open(const detail::ChannelSlot* slot, bool writing);
+  Wire open(const detail::ChannelSlot* slot, bool writing, double deadline_us = -1);
 
   network::Process& impl_;
 };

@@ -75,11 +75,15 @@ class Wire {
   virtual ~Wire() = default;
   virtual void send(std::int64_t bytes, std::any value) = 0;
   virtual std::any receive() = 0;
+  // A communication with a deadline gave up (Process::out_or_fail / in_or_fail): the wire's later
+  // items are not communicated and receive() delivers nothing.
+  virtual bool failed() const { return false; }
 };
 
 template <class T>
 T take(Wire& w) {
   std::any value = w.receive();
+  if (!value.has_value() && w.failed()) return T{};  // discarded by in_or_fail
   if (const T* v = std::any_cast<T>(&value)) return *v;
   throw std::logic_error("a channel delivered a value of another protocol");
 }
