@@ -20,9 +20,11 @@ class ProgramWorkload : public workloads::Workload {
 
   void build(network::Machine& machine) override;
   workloads::ResultValue results(const network::Machine& machine) const override;
+  std::vector<workloads::OutputTable> tables() const override { return tables_; }
 
  private:
   void join_channels(network::Machine& machine);
+  void check_tables() const;
   std::string end_process(const std::string& process, const ChannelSlot& slot) const;
   const PlacedProcess& placed(const std::string& process, const std::string& channel) const;
 
@@ -32,6 +34,7 @@ class ProgramWorkload : public workloads::Workload {
   std::vector<workloads::PlacementEntry> scene_placement_;
   Builder builder_;  // owns the channels the processes' handles point to
   std::vector<PlacedProcess> placed_;
+  mutable std::vector<workloads::OutputTable> tables_;  // the program's, from results()
 };
 
 }  // namespace t800sim::detail
