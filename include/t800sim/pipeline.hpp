@@ -32,7 +32,6 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -66,31 +65,16 @@ struct StageSpec {
   std::function<void(Builder&, const StageSpec&, const StageWiring&)> declare;
 };
 
-inline std::string member(const std::string& name, bool group, int i) {
-  return group ? name + "[" + std::to_string(i) + "]" : name;
-}
-
+// A member's process name: name[i] in a group, name for one process.
+std::string member(const std::string& name, bool group, int i);
 // The channel between `from` (member j) and `to` (member i) of neighbouring stages.
-inline std::string link_name(const std::string& from, const std::string& to, int j, int i) {
-  return from + "->" + to + "[" + std::to_string(j) + "][" + std::to_string(i) + "]";
-}
-
+std::string link_name(const std::string& from, const std::string& to, int j, int i);
 // Member i of a stage of `count` talks to the members of a neighbour of `other` that share one of
 // its rounds: round r is on member r % count here and r % other there.
-inline std::vector<int> partners(int i, int count, int other, int rounds) {
-  std::vector<int> out;
-  const int period = std::lcm(count, other);
-  for (int r = i; r < std::min(rounds, period); r += count)
-    if (std::find(out.begin(), out.end(), r % other) == out.end()) out.push_back(r % other);
-  return out;
-}
-
+std::vector<int> partners(int i, int count, int other, int rounds);
 // A stage's processes: a group name[0..count-1], or one process `name`.
-inline ProcessDecl& members(Builder& b, const std::string& name, int count, bool group,
-                            Process::IndexedBody body) {
-  if (group) return b.processes(name, count, std::move(body));
-  return b.process(name, [body = std::move(body)](Process& p) { body(p, 0); });
-}
+ProcessDecl& members(Builder& b, const std::string& name, int count, bool group,
+                     Process::IndexedBody body);
 
 // Member i's internal channel from process `from` to `to` of the same stage.
 template <class P>
