@@ -1,6 +1,7 @@
 #include "workloads/run/result_value.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -38,59 +39,83 @@ std::string ResultValue::first_non_finite(const std::string& path) const {
   if (const auto* x = std::get_if<double>(&v_)) return std::isfinite(*x) ? "" : path;
   if (const auto* l = std::get_if<List>(&v_))
     for (std::size_t i = 0; i < l->size(); ++i)
-      if (std::string at = (*l)[i].first_non_finite(path + "[" + std::to_string(i) + "]"); !at.empty())
+      if (std::string at = (*l)[i].first_non_finite(path + "[" + std::to_string(i) + "]");
+          !at.empty())
         return at;
   if (const auto* r = std::get_if<Record>(&v_))
     for (const auto& [key, value] : *r)
-      if (std::string at = value.first_non_finite(path.empty() ? key : path + "." + key); !at.empty())
+      if (std::string at = value.first_non_finite(path.empty() ? key : path + "." + key);
+          !at.empty())
         return at;
   return "";
 }
 
 namespace {
-std::string quote(const std::string& s) {
-  std::string out = "\"";
+// Everything is appended to one string: a string made and copied per value and per level of nesting
+// was most of the cost of a large farm's report.
+void append_quoted(std::string& out, const std::string& s) {
+  out += '"';
   for (char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20)
-          out += fmt::format("\\u{:04x}", c);
+          fmt::format_to(std::back_inserter(out), "\\u{:04x}", c);
         else
           out += c;
     }
   }
-  return out + "\"";
-}
-
-std::string number_text(double x) {
-  if (!std::isfinite(x)) return "null";  // JSON has no NaN or infinity
-  return fmt::format("{}", x);
+  out += '"';
 }
 }  // namespace
 
+void ResultValue::append_json(std::string& out) const {
+  if (const auto* x = std::get_if<double>(&v_)) {
+    if (std::isfinite(*x))
+      fmt::format_to(std::back_inserter(out), "{}", *x);
+    else
+      out += "null";  // JSON has no NaN or infinity
+  } else if (const auto* i = std::get_if<std::int64_t>(&v_)) {
+    fmt::format_to(std::back_inserter(out), "{}", *i);
+  } else if (const auto* b = std::get_if<bool>(&v_)) {
+    out += *b ? "true" : "false";
+  } else if (const auto* s = std::get_if<std::string>(&v_)) {
+    append_quoted(out, *s);
+  } else if (const auto* l = std::get_if<List>(&v_)) {
+    out += '[';
+    for (std::size_t k = 0; k < l->size(); ++k) {
+      if (k) out += ", ";
+      (*l)[k].append_json(out);
+    }
+    out += ']';
+  } else {
+    const Record& r = record();
+    out += '{';
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      if (k) out += ", ";
+      append_quoted(out, r[k].first);
+      out += ": ";
+      r[k].second.append_json(out);
+    }
+    out += '}';
+  }
+}
+
 std::string ResultValue::to_json() const {
-  struct Visitor {
-    std::string operator()(double x) const { return number_text(x); }
-    std::string operator()(std::int64_t x) const { return std::to_string(x); }
-    std::string operator()(bool x) const { return x ? "true" : "false"; }
-    std::string operator()(const std::string& s) const { return quote(s); }
-    std::string operator()(const List& l) const {
-      std::string out = "[";
-      for (std::size_t i = 0; i < l.size(); ++i) out += (i ? ", " : "") + l[i].to_json();
-      return out + "]";
-    }
-    std::string operator()(const Record& r) const {
-      std::string out = "{";
-      for (std::size_t i = 0; i < r.size(); ++i)
-        out += (i ? ", " : "") + quote(r[i].first) + ": " + r[i].second.to_json();
-      return out + "}";
-    }
-  };
-  return std::visit(Visitor{}, v_);
+  std::string out;
+  append_json(out);
+  return out;
 }
 
 std::string ResultValue::to_text(int indent) const {

@@ -40,6 +40,7 @@ class ResultValue {
   const List& items() const { return std::get<List>(v_); }
 
   std::string to_json() const;
+  void append_json(std::string& out) const;  // to_json's text, appended to `out`
   // Indented "key: value" lines, for the text report.
   std::string to_text(int indent = 0) const;
 
