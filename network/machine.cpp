@@ -363,8 +363,10 @@ void Machine::run_with_limits() {
 // events are pending: they are not run).
 void Machine::end_threads() {
   std::vector<sc_core::sc_process_handle> live;
-  for (const sc_core::sc_process_handle& h : handles_)
-    if (h.valid() && !h.terminated()) live.push_back(h);
+  // Newest first: SystemC keeps its threads in a list it pushes at the front and searches from the
+  // front to remove one, so killing them in creation order made the teardown quadratic.
+  for (auto h = handles_.rbegin(); h != handles_.rend(); ++h)
+    if (h->valid() && !h->terminated()) live.push_back(*h);
   handles_.clear();
   if (live.empty()) return;
   sc_core::sc_spawn([live]() mutable {

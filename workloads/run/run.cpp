@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 #include "network/families.hpp"
 
@@ -229,10 +230,10 @@ ResultValue RunReport::to_value() const {
   f.set("compute_cost", std::string(t800::to_string(fidelity.compute_cost)));
   f.set("skip_numerics", fidelity.skip_numerics);
   f.set("reuse_steps", fidelity.reuse_steps);
-  v.set("fidelity", f);
+  v.set("fidelity", std::move(f));
   ResultValue compiler;
   compiler.set("run_time_checks", run_time_checks);
-  v.set("compiler", compiler);
+  v.set("compiler", std::move(compiler));
   ResultValue procs = ResultValue::list();
   for (const ProcessorReport& p : processors) {
     ResultValue r;
@@ -253,12 +254,12 @@ ResultValue RunReport::to_value() const {
     mem.set("external_bytes", std::int64_t(p.memory.external_bytes));
     ResultValue off = ResultValue::list();
     for (const std::string& name : p.memory.off_chip) off.push(ResultValue(name));
-    mem.set("off_chip", off);
+    mem.set("off_chip", std::move(off));
     mem.set("external_access_cycles", std::int64_t(p.memory.external_access_cycles));
-    r.set("memory", mem);
-    procs.push(r);
+    r.set("memory", std::move(mem));
+    procs.push(std::move(r));
   }
-  v.set("processors", procs);
+  v.set("processors", std::move(procs));
   ResultValue links_value = ResultValue::list();
   for (const LinkReport& l : links) {
     ResultValue r;
@@ -267,14 +268,14 @@ ResultValue RunReport::to_value() const {
     r.set("messages", l.messages);
     r.set("busy_us", l.busy_us);
     r.set("utilisation", l.utilisation);
-    links_value.push(r);
+    links_value.push(std::move(r));
   }
-  v.set("links", links_value);
+  v.set("links", std::move(links_value));
   if (!failure.empty()) v.set("failure", failure);
   if (!faults.empty()) {
     ResultValue list = ResultValue::list();
     for (const network::FaultRecord& f : faults) list.push(fault_value(f));
-    v.set("faults", list);
+    v.set("faults", std::move(list));
   }
   if (limit != network::Limit::none)
     v.set("stopped_by", limit == network::Limit::sim_time ? "max_sim_time" : "max_wall_time");
@@ -286,12 +287,12 @@ ResultValue RunReport::to_value() const {
       r.set("processor", p.processor);
       r.set("status", p.status);
       r.set("waits_for", p.waits_for);
-      b.push(r);
+      b.push(std::move(r));
     }
-    v.set("deadlock", b);
+    v.set("deadlock", std::move(b));
     ResultValue cycle = ResultValue::list();
     for (const std::string& step : wait_cycle) cycle.push(step);
-    v.set("wait_cycle", cycle);
+    v.set("wait_cycle", std::move(cycle));
   }
   v.set("workload", workload);
   return v;
