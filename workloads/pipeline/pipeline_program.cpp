@@ -1,5 +1,6 @@
 #include "workloads/pipeline/pipeline_program.hpp"
 
+#include <any>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
@@ -64,7 +65,7 @@ class PipelineProgram<T>::Levels {
     if (settings.recovery && serve != Serve::once)
       throw std::invalid_argument("elimination pipeline: recovery serves one system only");
     M::register_faults();
-    wiring_ = levels::Wiring::plan(machine, shape, nodes, client, serve);
+    wiring_ = levels::Wiring::plan(machine, shape, nodes, client, serve, M::stops);
     const levels::Context<T> context{settings, shape, nodes, wiring_, report_, pieces_, serve};
     // Recovery: a message that has started arrives within twice the longest message's time on a
     // link, and 10 us.
@@ -169,9 +170,9 @@ class PipelineProgram<T>::Levels {
   void receive(Process& p) {
     if (!wiring_.reply)
       throw std::logic_error("elimination pipeline: solve() needs Serve::until_finish");
-    const t800::Message m = p.in(*wiring_.reply);
+    const auto answer = std::any_cast<typename M::Answer>(p.in(*wiring_.reply).payload);
     report_.outcome.returned_us = p.now_us();
-    if (m.label == kFailLabel) stopped_ = true;
+    if (!answer.ok) stopped_ = true;
   }
 
   void finish(Process& p) {

@@ -9,10 +9,6 @@ namespace {
 
 using network::Process;
 
-bool failed(const t800::Message& m) {
-  return m.label == kFailLabel;
-}
-
 bool more(const Relay& relay, int round) {
   return relay.rounds == Relay::kUntilStopped || round < relay.rounds;
 }
@@ -60,7 +56,7 @@ void spawn_fan_out(network::Machine& machine, const PipelineShape& shape, const 
         if (takers.empty()) continue;
         const t800::Message pivot = p.in(*relay.inputs.front());
         for (int e : takers) p.out(*inner[slot(relay, e)], pivot);
-        if (failed(pivot)) return;
+        if (relay.stops(pivot.payload)) return;
         for (std::size_t i : relay_rows(shape, relay.served, k))
           p.out(*inner[slot(relay, shape.owner(i))], p.in(*relay.inputs.front()));
       }
@@ -74,7 +70,7 @@ void spawn_fan_out(network::Machine& machine, const PipelineShape& shape, const 
                       for (int k = 0; k < shape.n; ++k) {
                         if (!shape.participates(k, e)) continue;
                         t800::Message pivot = p.in(in);
-                        const bool stop = failed(pivot);
+                        const bool stop = relay.stops(pivot.payload);
                         p.out(out, std::move(pivot));
                         if (stop) return;
                         for (std::size_t count = shape.rows_for(k, e).size(); count > 0; --count)
@@ -98,7 +94,7 @@ void spawn_fan_in(network::Machine& machine, const PipelineShape& shape, const R
                       for (int k = 0; k < shape.n; ++k) {
                         for (std::size_t count = shape.rows_for(k, e).size(); count > 0; --count) {
                           t800::Message m = p.in(in);
-                          const bool stop = failed(m);
+                          const bool stop = relay.stops(m.payload);
                           p.out(out, std::move(m));
                           if (stop) return;
                         }
@@ -110,7 +106,7 @@ void spawn_fan_in(network::Machine& machine, const PipelineShape& shape, const R
       for (int k = 0; k < shape.n; ++k) {
         for (std::size_t i : relay_rows(shape, relay.served, k)) {
           t800::Message m = p.in(*inner[slot(relay, shape.owner(i))]);
-          if (!failed(m)) {
+          if (!relay.stops(m.payload)) {
             p.out(*relay.outputs.front(), std::move(m));
             continue;
           }

@@ -4,10 +4,12 @@
 // process and one output process per link, joined by internal channels, so that X takes the next
 // row from L1 while it is still sending the previous one on. X receives each step's pivot row once
 // and copies it to every processor it serves. They know the pipeline's schedule (schedule.hpp),
-// so no routing header is needed; they stop on a failure message (which also ends a pipeline that
-// serves until finish, pipeline_program.hpp).
+// so no routing header is needed; they stop on a stop message (its header word's status flag says
+// failure or finish; which also ends a pipeline that serves until finish, pipeline_program.hpp).
 #pragma once
 
+#include <any>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,7 +18,7 @@
 
 namespace workloads {
 
-// The label of a failure message (a bare header word): relays pass it on and stop.
+// The trace label of a stop message (a bare header word); control flow reads the value, not this.
 constexpr const char* kFailLabel = "fail";
 
 struct Relay {
@@ -26,6 +28,9 @@ struct Relay {
   std::vector<int> served;  // level-2 processors (0-based) behind this relay, ascending
   // Fan-out: one input (from L1) and one output per served processor. Fan-in: the reverse.
   std::vector<network::Channel*> inputs, outputs;
+  // Whether a message's value is a stop (the header word's status flag, as occam's relay reads
+  // it): the relay passes it on and ends.
+  std::function<bool(const std::any& value)> stops;
 };
 
 void spawn_fan_out(network::Machine& machine, const PipelineShape& shape, const Relay& relay);

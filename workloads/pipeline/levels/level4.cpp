@@ -18,7 +18,7 @@ bool Level4<T>::round(Process& p) {
     if (!pivot.ok) {
       if (pivot.finish) return false;
       outcome.end_us = p.now_us();
-      if (w.reply) p.out(*w.reply, {kHeaderBytes, {}, kFailLabel});
+      if (w.reply) p.out(*w.reply, message(typename M::Answer{false, {}}, kFailLabel));
       return false;
     }
     unstable = unstable || pivot.unstable;
@@ -36,7 +36,7 @@ bool Level4<T>::round(Process& p) {
     values.push_back(static_cast<double>(v.value()));
   }
   const std::vector<double>& qdd = c_.report.solved(values, finite, unstable, c_.n());
-  if (w.reply) p.out(*w.reply, message(qdd, M::bytes(qdd), "qdd"));
+  if (w.reply) p.out(*w.reply, message(typename M::Answer{true, qdd}, "qdd"));
   return true;
 }
 

@@ -5,6 +5,7 @@
 // simulator's message with those bytes, so no call site writes a byte count.
 #pragma once
 
+#include <any>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -74,8 +75,18 @@ struct Messages {
     std::size_t index = 0;
     std::int64_t bytes() const { return ok ? reals(values.size()) : kHeaderBytes; }
   };
-  // q̈ back to the client (an empty one is a failure's header word).
-  static std::int64_t bytes(const std::vector<double>& qdd) { return reals(qdd.size()); }
+  // q̈ back to the client, or a failure (ok = false: the header word's status flag, and no REALs).
+  struct Answer {
+    bool ok = true;
+    std::vector<double> qdd;
+    std::int64_t bytes() const { return ok ? reals(qdd.size()) : kHeaderBytes; }
+  };
+  // Whether a message is a stop: a pivot message whose header word says failure or finish. A relay
+  // reads it as occam's would, and passes the message on.
+  static bool stops(const std::any& value) {
+    const Pivot* pivot = std::any_cast<Pivot>(&value);
+    return pivot && !pivot->ok;
+  }
 
   // Recovery's messages (PipelineSettings::recovery): each carries the step it belongs to and a
   // checksum of its header word and REALs.

@@ -15,8 +15,9 @@ bool behind(const network::Machine& machine, int relay, int level, int node) {
 // A level-2 processor that is L1's neighbour gets a channel of its own; one behind the fan-out X
 // shares X's channel; any other gets a channel the network routes.
 void plan_level1_side(Wiring& w, network::Machine& machine, const PipelineShape& shape,
-                      const PipelineNodes& nodes, Serve serve) {
+                      const PipelineNodes& nodes, Serve serve, const Wiring::Stops& stops) {
   Relay fan_out;
+  fan_out.stops = stops;
   fan_out.node = machine.topology().find("X");
   for (int e = 0; e < shape.m; ++e) {
     const int node = nodes.e[std::size_t(e)];
@@ -39,8 +40,9 @@ void plan_level1_side(Wiring& w, network::Machine& machine, const PipelineShape&
 
 // The same on L3's side, with the fan-in Y.
 void plan_level3_side(Wiring& w, network::Machine& machine, const PipelineShape& shape,
-                      const PipelineNodes& nodes, Serve serve) {
+                      const PipelineNodes& nodes, Serve serve, const Wiring::Stops& stops) {
   Relay fan_in;
+  fan_in.stops = stops;
   fan_in.node = machine.topology().find("Y");
   for (int e = 0; e < shape.m; ++e) {
     const int node = nodes.e[std::size_t(e)];
@@ -68,11 +70,11 @@ void plan_level3_side(Wiring& w, network::Machine& machine, const PipelineShape&
 }  // namespace
 
 Wiring Wiring::plan(network::Machine& machine, const PipelineShape& shape,
-                    const PipelineNodes& nodes, int client, Serve serve) {
+                    const PipelineNodes& nodes, int client, Serve serve, const Stops& stops) {
   Wiring w;
   w.input = &machine.channel("system", client, nodes.l1);
-  plan_level1_side(w, machine, shape, nodes, serve);
-  plan_level3_side(w, machine, shape, nodes, serve);
+  plan_level1_side(w, machine, shape, nodes, serve, stops);
+  plan_level3_side(w, machine, shape, nodes, serve, stops);
   w.back = &machine.channel("L3->L1", nodes.l3, nodes.l1);
   w.to_l4 = &machine.channel("L3->L4", nodes.l3, nodes.l4);
   if (serve == Serve::until_finish) w.reply = &machine.channel("qdd", nodes.l4, client);

@@ -4,6 +4,8 @@
 // only read it.
 #pragma once
 
+#include <any>
+#include <functional>
 #include <vector>
 
 #include "network/machine.hpp"
@@ -27,9 +29,11 @@ struct Wiring {
   std::vector<bool> e_behind_fan_in;
   std::vector<Port> out_ports, in_ports;  // L1's output channels, L3's input channels
 
+  // Whether a message's value is a stop (Relay::stops).
+  using Stops = std::function<bool(const std::any& value)>;
   // Declares the channels (and spawns the relays) in the order the simulation has always made them.
   static Wiring plan(network::Machine& machine, const PipelineShape& shape,
-                     const PipelineNodes& nodes, int client, Serve serve);
+                     const PipelineNodes& nodes, int client, Serve serve, const Stops& stops);
 
   // Of a port's level-2 processors, those that take part in step k.
   static std::vector<int> takers(const PipelineShape& shape, const Port& port, int k);
