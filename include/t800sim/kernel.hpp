@@ -50,7 +50,10 @@ class Kernel {
  public:
   Kernel(std::shared_ptr<const t800::codegen::Recording> code, const dynamics::OpCounts& counts,
          long loop_iterations);
-  const std::string& name() const;
+  // A kernel recorded and costed elsewhere (the simulator's own workloads record theirs piece by
+  // piece).
+  explicit Kernel(t800::ComputeWork work) : work_(std::move(work)) {}
+  const std::string& name() const { return work_.code->name(); }
   const t800::ComputeWork& work() const { return work_; }
 
  private:

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "t800/payload_bytes.hpp"
 #include "t800sim/protocol.hpp"
 
 namespace {
@@ -102,6 +103,18 @@ TEST(Protocol, AChangedByteOfAPackedValueLandsInTheItemAtItsOffset) {
   ASSERT_TRUE(protocol<P>::flip(v, 12, 0x01));  // the trailing word's lowest byte: 5 ^ 1
   EXPECT_EQ(std::get<2>(v), 4);
   EXPECT_FALSE(protocol<P>::flip(v, 16, 0x01));  // past the end
+}
+
+// Sending a packed value tells the simulator's link faults how its bytes lie
+// (t800/payload_bytes.hpp): a corrupted byte of the message lands in the value the receiver reads.
+TEST(Protocol, ALinkFaultChangesTheValueOfAPackedMessageItCarries) {
+  using P = Packed<INT, Block<REAL64>>;
+  RecordingWire w;
+  protocol<P>::send(w, {3, {1.0}});
+  std::any carried = w.values.at(0);
+  // 1.0 is 0x3ff0000000000000; its last byte (message byte 4 + 7) XOR 0x80: -1.0.
+  ASSERT_TRUE(t800::flip_payload_byte(carried, 11, 0x80));
+  EXPECT_EQ(std::any_cast<value_of<P>>(carried), (value_of<P>{3, {-1.0}}));
 }
 
 // A value of another protocol arriving is a program error, not a silent reinterpretation.

@@ -1,9 +1,9 @@
 #include "workloads/pipeline/pipeline_program.hpp"
 
-#include <any>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
+#include <tuple>
 
 #include "t800/link_timing.hpp"
 #include "workloads/pipeline/levels/level1.hpp"
@@ -93,7 +93,8 @@ class PipelineProgram<T>::Levels {
       levels::loop(serve_, p, [this](Process& q) { return level3_->round(q); });
     });
     machine.spawn(nodes.l4, "level4", low, [this](Process& p) {
-      levels::loop(serve_, p, [this](Process& q) { return level4_->round(q); });
+      t800sim::Process level4(p);
+      levels::loop(serve_, level4, [this](t800sim::Process& q) { return level4_->round(q); });
     });
     declare_code(machine);
   }
@@ -170,9 +171,10 @@ class PipelineProgram<T>::Levels {
   void receive(Process& p) {
     if (!wiring_.reply)
       throw std::logic_error("elimination pipeline: solve() needs Serve::until_finish");
-    const auto answer = std::any_cast<typename M::Answer>(p.in(*wiring_.reply).payload);
+    const auto answer =
+        t800sim::Process(p).in(t800sim::In<typename M::Packet>(wiring_.answer.get()));
     report_.outcome.returned_us = p.now_us();
-    if (!answer.ok) stopped_ = true;
+    if (std::get<0>(answer) & levels::header::kStop) stopped_ = true;
   }
 
   void finish(Process& p) {

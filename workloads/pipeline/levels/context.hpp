@@ -11,6 +11,8 @@
 #include <systemc>
 
 #include "network/machine.hpp"
+#include "t800sim/kernel.hpp"
+#include "t800sim/process.hpp"
 #include "workloads/pipeline/checksum.hpp"
 #include "workloads/pipeline/levels/messages.hpp"
 #include "workloads/pipeline/levels/report.hpp"
@@ -42,6 +44,13 @@ struct Context {
     p.compute(cost, label);
     return std::move(result);
   }
+  template <class Kernel, class... Inputs>
+  auto run_piece(t800sim::Process& p, const char* label, Kernel kernel,
+                 Named<Inputs>... inputs) const {
+    auto [result, cost] = pieces.run(label, kernel, inputs...);
+    p.compute(t800sim::Kernel(std::move(cost)), label);
+    return std::move(result);
+  }
 
   // The checksum loop over a message of `count` REALs and its header, on p's processor.
   void charge_checksum(Process& p, std::size_t count) const {
@@ -57,8 +66,8 @@ inline void par(Process& p, const std::vector<Process::Body>& branches) {
 }
 
 // Once: one round. Until finish: rounds until the level sees the finish (or a failure) and stops.
-template <class Round>
-void loop(Serve serve, Process& p, Round round) {
+template <class AnyProcess, class Round>
+void loop(Serve serve, AnyProcess& p, Round round) {
   for (int r = 0; serve == Serve::until_finish || r < 1; ++r)
     if (!round(p)) return;
 }

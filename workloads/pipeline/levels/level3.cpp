@@ -22,7 +22,7 @@ bool Level3<T>::round(Process& p) {
   for (int k = 0; k < c_.n(); ++k) {
     auto pivot = std::any_cast<Pivot>(p.in(*w.e_out[0]).payload);
     if (!pivot.ok) {
-      p.out(*w.to_l4, {kHeaderBytes, pivot, kFailLabel});
+      to_l4(p, k, pivot, kFailLabel);
       return false;
     }
     if (k == 0 && c_.settings.rule.growth_check())
@@ -79,8 +79,7 @@ template <class T>
 void Level3<T>::collect(Process& p, int k, Pivot& pivot, bool unstable, Rows& rows) {
   using RowMessage = typename M::RowMessage;
   pivot.unstable = unstable;
-  std::vector<Process::Body> branches{
-      [&](Process& q) { q.out(*c_.wiring.to_l4, message(pivot, "U row")); }};
+  std::vector<Process::Body> branches{[&](Process& q) { to_l4(q, k, pivot, "U row"); }};
   std::vector<int> arrived(rows.size(), 0);
   for (const Port& port : c_.wiring.in_ports) {
     const std::vector<std::size_t> expected = relay_rows(c_.shape, port.served, k);
@@ -111,7 +110,7 @@ void Level3<T>::stream(Process& p, int k, Pivot& pivot, C bound, bool& unstable)
   std::vector<std::size_t> ready;  // indices in arrival order
   std::vector<Process::Body> branches{[&](Process& q) {
     pivot.unstable = unstable;
-    q.out(*c_.wiring.to_l4, message(pivot, "U row"));
+    to_l4(q, k, pivot, "U row");
   }};
   for (const Port& port : c_.wiring.in_ports) {
     const std::vector<std::size_t> expected = relay_rows(c_.shape, port.served, k);
@@ -175,17 +174,16 @@ bool Level3<T>::checked(Process& p) {
               " requests in a row to resend them (a fault no other level-2 processor could get "
               "round, or workload.recovery_timeout_us shorter than the pipeline's own pauses)");
       p.out(*w.back, message(typename M::ReturnedRow{false, {}}, kFailLabel));
-      p.out(*w.to_l4, message(Pivot::stop(false), kFailLabel));
+      to_l4(p, k, Pivot::stop(false), kFailLabel);
       return false;
     }
-    Pivot u{true, false, unstable, pivot.row, pivot.scale};
-    p.out(*w.to_l4, message(u, "U row"));
+    to_l4(p, k, Pivot{true, false, unstable, pivot.row, pivot.scale}, "U row");
     if (k == 0 && c_.settings.rule.growth_check())
       bound = c_.run_piece(
           p, "bound", [&](auto& s) { return elimination::growth_bound(s, c_.settings.rule); },
           named("scale", pivot.scale));
     if (r > 0 && !return_reduced(p, k, rows, bound, unstable)) {
-      p.out(*w.to_l4, message(Pivot::stop(false), kFailLabel));
+      to_l4(p, k, Pivot::stop(false), kFailLabel);
       return false;
     }
   }
@@ -291,6 +289,12 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
     rows[row.index - 1] = row.values;
     have[row.index] = true;
   }
+}
+
+template <class T>
+void Level3<T>::to_l4(Process& p, int k, const Pivot& pivot, const char* label) const {
+  t800sim::Process(p).out(t800sim::Out<typename M::Packet>(c_.wiring.u_rows.get()),
+                          M::u_row(k, pivot), label);
 }
 
 template <class T>

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "t800/message.hpp"
+#include "t800sim/protocol.hpp"
 #include "workloads/dynamics/counted.hpp"
 #include "workloads/elimination/gauss.hpp"
 #include "workloads/elimination/system.hpp"
@@ -22,6 +23,17 @@ namespace workloads::levels {
 // One INT32 word in front of every row or matrix: the row's number (or the step) and a status flag.
 constexpr std::int64_t kHeaderBytes = 4;
 constexpr std::int64_t kChecksumBytes = 4;
+
+// The header word of a packet (Messages::Packet): a number (a row's, or a step) in the low bits,
+// status flags in the high ones, as the occam program's header word has them. A stop ends the
+// pipeline: a failure, or with kFinish the client's finish; kUnstable: the pivots have grown past
+// the limit.
+namespace header {
+constexpr std::int32_t kStop = 1 << 30;
+constexpr std::int32_t kFinish = 1 << 29;
+constexpr std::int32_t kUnstable = 1 << 28;
+constexpr std::int32_t kNumber = kUnstable - 1;
+}  // namespace header
 
 template <class T>
 struct Messages {
@@ -75,12 +87,29 @@ struct Messages {
     std::size_t index = 0;
     std::int64_t bytes() const { return ok ? reals(values.size()) : kHeaderBytes; }
   };
-  // q̈ back to the client, or a failure (ok = false: the header word's status flag, and no REALs).
-  struct Answer {
-    bool ok = true;
-    std::vector<double> qdd;
-    std::int64_t bytes() const { return ok ? reals(qdd.size()) : kHeaderBytes; }
-  };
+  // What the SDK's typed channels carry: the header word and a row in one communication (occam:
+  // both in one buffer, sent as a slice on a CHAN OF ANY), the REALs as T.
+  using Packet = t800sim::Packed<t800sim::INT, t800sim::Block<T>>;
+  using PacketValue = t800sim::value_of<Packet>;
+  static PacketValue packet(std::int32_t header, const Row& row) {
+    std::vector<T> values;
+    for (const C& v : row) values.push_back(v.value());
+    return {header, std::move(values)};
+  }
+  static Row row_of(const PacketValue& packet) {
+    const std::vector<T>& values = std::get<1>(packet);
+    return Row(values.begin(), values.end());
+  }
+  // A row of U, L3 -> L4, with the step; a stop is its header word alone.
+  static PacketValue u_row(int step, const Pivot& pivot) {
+    if (!pivot.ok) return {header::kStop | (pivot.finish ? header::kFinish : 0), {}};
+    return packet(step | (pivot.unstable ? header::kUnstable : 0), pivot.row);
+  }
+  // q̈ back to the client (the REALs of its precision), or a failure: the header word alone.
+  static PacketValue answer(bool ok, const std::vector<double>& qdd) {
+    if (!ok) return {header::kStop, {}};
+    return {0, std::vector<T>(qdd.begin(), qdd.end())};
+  }
   // Whether a message is a stop: a pivot message whose header word says failure or finish. A relay
   // reads it as occam's would, and passes the message on.
   static bool stops(const std::any& value) {

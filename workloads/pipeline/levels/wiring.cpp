@@ -1,12 +1,23 @@
 #include "workloads/pipeline/levels/wiring.hpp"
 
+#include <memory>
 #include <string>
 
+#include "network/channel.hpp"
 #include "workloads/pipeline/relay.hpp"
 
 namespace workloads::levels {
 
 namespace {
+
+// A typed end (t800sim/channel.hpp) for a channel planned here.
+std::unique_ptr<t800sim::detail::ChannelSlot> slot_for(network::Channel* channel) {
+  if (!channel) return nullptr;
+  auto slot = std::make_unique<t800sim::detail::ChannelSlot>();
+  slot->name = channel->name;
+  slot->impl = channel;
+  return slot;
+}
 
 bool behind(const network::Machine& machine, int relay, int level, int node) {
   return relay >= 0 && machine.link_between(relay, level) && machine.link_between(relay, node);
@@ -78,6 +89,8 @@ Wiring Wiring::plan(network::Machine& machine, const PipelineShape& shape,
   w.back = &machine.channel("L3->L1", nodes.l3, nodes.l1);
   w.to_l4 = &machine.channel("L3->L4", nodes.l3, nodes.l4);
   if (serve == Serve::until_finish) w.reply = &machine.channel("qdd", nodes.l4, client);
+  w.u_rows = slot_for(w.to_l4);
+  w.answer = slot_for(w.reply);
   return w;
 }
 

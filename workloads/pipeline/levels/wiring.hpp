@@ -6,9 +6,11 @@
 
 #include <any>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "network/machine.hpp"
+#include "t800sim/channel.hpp"
 #include "workloads/pipeline/pipeline_program.hpp"
 #include "workloads/pipeline/schedule.hpp"
 
@@ -28,6 +30,9 @@ struct Wiring {
   std::vector<network::Channel*> e_in, e_out;  // each level-2 processor's input and output
   std::vector<bool> e_behind_fan_in;
   std::vector<Port> out_ports, in_ports;  // L1's output channels, L3's input channels
+  // The SDK's typed ends (t800sim/channel.hpp) of the channels the levels on t800sim::Process use:
+  // L3 -> L4 and L4 -> client (nullptr when there is no reply).
+  std::unique_ptr<t800sim::detail::ChannelSlot> u_rows, answer;
 
   // Whether a message's value is a stop (Relay::stops).
   using Stops = std::function<bool(const std::any& value)>;
