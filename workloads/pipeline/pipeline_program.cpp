@@ -172,7 +172,7 @@ class PipelineProgram<T>::Levels {
     if (!wiring_.reply)
       throw std::logic_error("elimination pipeline: solve() needs Serve::until_finish");
     const auto answer =
-        t800sim::Process(p).in(t800sim::In<typename M::Packet>(wiring_.answer.get()));
+        t800sim::Process(p).in(t800sim::In<typename M::Packet>(wiring_.typed(wiring_.reply)));
     report_.outcome.returned_us = p.now_us();
     if (std::get<0>(answer) & levels::header::kStop) stopped_ = true;
   }

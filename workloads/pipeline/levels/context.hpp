@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -50,6 +51,18 @@ struct Context {
     auto [result, cost] = pieces.run(label, kernel, inputs...);
     p.compute(t800sim::Kernel(std::move(cost)), label);
     return std::move(result);
+  }
+
+  // A packet over a channel of the wiring, through the SDK's typed channel (a t800sim::Process
+  // view of p): the bytes from the protocol, `label` naming it in traces and fault reports.
+  using Packet = typename Messages<T>::Packet;
+  using PacketValue = typename Messages<T>::PacketValue;
+  void send(Process& p, const network::Channel* c, const PacketValue& v,
+            const std::string& label) const {
+    t800sim::Process(p).out(t800sim::Out<Packet>(wiring.typed(c)), v, label);
+  }
+  PacketValue receive(Process& p, const network::Channel* c) const {
+    return t800sim::Process(p).in(t800sim::In<Packet>(wiring.typed(c)));
   }
 
   // The checksum loop over a message of `count` REALs and its header, on p's processor.

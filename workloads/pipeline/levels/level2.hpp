@@ -22,7 +22,8 @@ class Level2 {
 
  private:
   using M = Messages<T>;
-  void eliminate_buffered(Process& p, const t800::Message& pivot_message,
+  using PacketValue = typename M::PacketValue;
+  void eliminate_buffered(Process& p, const PacketValue& pivot_packet,
                           const std::vector<std::size_t>& rows);
   network::Channel& in() const { return *c_.wiring.e_in[std::size_t(e_)]; }
   network::Channel& out() const { return *c_.wiring.e_out[std::size_t(e_)]; }

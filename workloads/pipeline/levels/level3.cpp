@@ -20,7 +20,7 @@ bool Level3<T>::round(Process& p) {
   C bound = C(0);
   bool unstable = false;
   for (int k = 0; k < c_.n(); ++k) {
-    auto pivot = std::any_cast<Pivot>(p.in(*w.e_out[0]).payload);
+    Pivot pivot = M::pivot_of(c_.receive(p, w.e_out[0]));
     if (!pivot.ok) {
       to_l4(p, k, pivot, kFailLabel);
       return false;
@@ -63,13 +63,13 @@ bool Level3<T>::return_reduced(Process& p, int k, Rows& rows, C bound, bool& uns
     c_.report.fail(k, Status::non_finite,
                    "level 3: a non-finite value in row " + std::to_string(check.row + 1) +
                        " of step " + std::to_string(k));
-    p.out(*c_.wiring.back, message(typename M::ReturnedRow{false, {}}, kFailLabel));
+    c_.send(p, c_.wiring.back, M::to_packet(typename M::ReturnedRow{false, {}}), kFailLabel);
     return false;
   }
   if (check.status == Status::unstable) unstable_at(k, unstable);
   for (std::size_t i = 0; i < rows.size(); ++i)
-    p.out(*c_.wiring.back,
-          message(typename M::ReturnedRow{true, std::move(rows[i]), i}, "reduced row"));
+    c_.send(p, c_.wiring.back, M::to_packet(typename M::ReturnedRow{true, std::move(rows[i]), i}),
+            "reduced row");
   return true;
 }
 
@@ -84,9 +84,9 @@ void Level3<T>::collect(Process& p, int k, Pivot& pivot, bool unstable, Rows& ro
   for (const Port& port : c_.wiring.in_ports) {
     const std::vector<std::size_t> expected = relay_rows(c_.shape, port.served, k);
     if (expected.empty()) continue;
-    branches.push_back([&port, expected, &rows, &arrived](Process& q) {
+    branches.push_back([this, &port, expected, &rows, &arrived](Process& q) {
       for (std::size_t count = expected.size(); count > 0; --count) {
-        auto row = std::any_cast<RowMessage>(q.in(*port.channel).payload);
+        RowMessage row = M::row_message_of(c_.receive(q, port.channel));
         if (row.index < 1 || row.index > rows.size())
           q.stop("row number " + std::to_string(row.index) + " out of range");
         rows[row.index - 1] = std::move(row.values);
@@ -117,7 +117,7 @@ void Level3<T>::stream(Process& p, int k, Pivot& pivot, C bound, bool& unstable)
     if (expected.empty()) continue;
     branches.push_back([this, &port, expected, &rows, &ready](Process& q) {
       for (std::size_t count = expected.size(); count > 0; --count) {
-        auto row = std::any_cast<RowMessage>(q.in(*port.channel).payload);
+        RowMessage row = M::row_message_of(c_.receive(q, port.channel));
         if (row.index < 1 || row.index > rows.size())
           q.stop("row number " + std::to_string(row.index) + " out of range");
         rows[row.index - 1] = std::move(row.values);
@@ -149,7 +149,8 @@ void Level3<T>::forward(Process& p, int k, elimination::Row<C>& row, std::size_t
                    "level 3: a non-finite value in row " + std::to_string(i + 1) + " of step " +
                        std::to_string(k));
   if (check.status == Status::unstable) unstable_at(k, unstable);
-  p.out(*c_.wiring.back, message(typename M::ReturnedRow{true, std::move(row), i}, "reduced row"));
+  c_.send(p, c_.wiring.back, M::to_packet(typename M::ReturnedRow{true, std::move(row), i}),
+          "reduced row");
 }
 
 // ---- recovery ----
@@ -173,7 +174,7 @@ bool Level3<T>::checked(Process& p) {
               std::to_string(c_.shape.m + 1) +
               " requests in a row to resend them (a fault no other level-2 processor could get "
               "round, or workload.recovery_timeout_us shorter than the pipeline's own pauses)");
-      p.out(*w.back, message(typename M::ReturnedRow{false, {}}, kFailLabel));
+      c_.send(p, w.back, M::to_packet(typename M::ReturnedRow{false, {}}), kFailLabel);
       to_l4(p, k, Pivot::stop(false), kFailLabel);
       return false;
     }
@@ -187,7 +188,8 @@ bool Level3<T>::checked(Process& p) {
       return false;
     }
   }
-  p.out(*w.back, message(typename M::ReturnedRow{true, {}, 0}, "done"));  // L1 resends no more
+  c_.send(p, w.back, M::to_packet(typename M::ReturnedRow{true, {}, 0}),
+          "done");  // no more resends
   return true;
 }
 
@@ -293,8 +295,7 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
 
 template <class T>
 void Level3<T>::to_l4(Process& p, int k, const Pivot& pivot, const char* label) const {
-  t800sim::Process(p).out(t800sim::Out<typename M::Packet>(c_.wiring.u_rows.get()),
-                          M::u_row(k, pivot), label);
+  c_.send(p, c_.wiring.to_l4, M::to_packet(k, pivot), label);
 }
 
 template <class T>

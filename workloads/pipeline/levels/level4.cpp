@@ -11,8 +11,8 @@ bool Level4<T>::round(t800sim::Process& p) {
   using C = typename M::C;
   using Packet = typename M::Packet;
   const Wiring& w = c_.wiring;
-  const t800sim::In<Packet> u_rows(w.u_rows.get());
-  const t800sim::Out<Packet> answer(w.answer.get());
+  const t800sim::In<Packet> u_rows(w.typed(w.to_l4));
+  const t800sim::Out<Packet> answer(w.typed(w.reply));
   PipelineOutcome& outcome = c_.report.outcome;
   elimination::Rows<C> upper;
   bool unstable = false;
@@ -22,7 +22,7 @@ bool Level4<T>::round(t800sim::Process& p) {
     if (flags & header::kStop) {
       if (flags & header::kFinish) return false;
       outcome.end_us = p.now_us();
-      if (w.answer) p.out(answer, M::answer(false, {}), kFailLabel);
+      if (w.reply) p.out(answer, M::answer(false, {}), kFailLabel);
       return false;
     }
     unstable = unstable || (flags & header::kUnstable);
@@ -40,7 +40,7 @@ bool Level4<T>::round(t800sim::Process& p) {
     values.push_back(static_cast<double>(v.value()));
   }
   const std::vector<double>& qdd = c_.report.solved(values, finite, unstable, c_.n());
-  if (w.answer) p.out(answer, M::answer(true, qdd), "qdd");
+  if (w.reply) p.out(answer, M::answer(true, qdd), "qdd");
   return true;
 }
 

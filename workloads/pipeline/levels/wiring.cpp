@@ -10,15 +10,6 @@ namespace workloads::levels {
 
 namespace {
 
-// A typed end (t800sim/channel.hpp) for a channel planned here.
-std::unique_ptr<t800sim::detail::ChannelSlot> slot_for(network::Channel* channel) {
-  if (!channel) return nullptr;
-  auto slot = std::make_unique<t800sim::detail::ChannelSlot>();
-  slot->name = channel->name;
-  slot->impl = channel;
-  return slot;
-}
-
 bool behind(const network::Machine& machine, int relay, int level, int node) {
   return relay >= 0 && machine.link_between(relay, level) && machine.link_between(relay, node);
 }
@@ -89,9 +80,25 @@ Wiring Wiring::plan(network::Machine& machine, const PipelineShape& shape,
   w.back = &machine.channel("L3->L1", nodes.l3, nodes.l1);
   w.to_l4 = &machine.channel("L3->L4", nodes.l3, nodes.l4);
   if (serve == Serve::until_finish) w.reply = &machine.channel("qdd", nodes.l4, client);
-  w.u_rows = slot_for(w.to_l4);
-  w.answer = slot_for(w.reply);
+  // The typed ends of the levels' channels (not the relays' own).
+  std::vector<network::Channel*> all{w.input, w.reply, w.back, w.to_l4};
+  all.insert(all.end(), w.e_in.begin(), w.e_in.end());
+  all.insert(all.end(), w.e_out.begin(), w.e_out.end());
+  for (const auto* ports : {&w.out_ports, &w.in_ports})
+    for (const Port& port : *ports) all.push_back(port.channel);
+  for (network::Channel* channel : all) {
+    if (!channel || w.typed_.count(channel)) continue;
+    auto slot = std::make_unique<t800sim::detail::ChannelSlot>();
+    slot->name = channel->name;
+    slot->impl = channel;
+    w.typed_[channel] = std::move(slot);
+  }
   return w;
+}
+
+t800sim::detail::ChannelSlot* Wiring::typed(const network::Channel* channel) const {
+  const auto found = typed_.find(channel);
+  return found == typed_.end() ? nullptr : found->second.get();
 }
 
 std::vector<int> Wiring::takers(const PipelineShape& shape, const Port& port, int k) {

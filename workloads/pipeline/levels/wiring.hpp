@@ -6,6 +6,7 @@
 
 #include <any>
 #include <functional>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -30,9 +31,8 @@ struct Wiring {
   std::vector<network::Channel*> e_in, e_out;  // each level-2 processor's input and output
   std::vector<bool> e_behind_fan_in;
   std::vector<Port> out_ports, in_ports;  // L1's output channels, L3's input channels
-  // The SDK's typed ends (t800sim/channel.hpp) of the channels the levels on t800sim::Process use:
-  // L3 -> L4 and L4 -> client (nullptr when there is no reply).
-  std::unique_ptr<t800sim::detail::ChannelSlot> u_rows, answer;
+  // The SDK's typed end (t800sim/channel.hpp) of each channel planned here (nullptr: none).
+  t800sim::detail::ChannelSlot* typed(const network::Channel* channel) const;
 
   // Whether a message's value is a stop (Relay::stops).
   using Stops = std::function<bool(const std::any& value)>;
@@ -42,6 +42,9 @@ struct Wiring {
 
   // Of a port's level-2 processors, those that take part in step k.
   static std::vector<int> takers(const PipelineShape& shape, const Port& port, int k);
+
+ private:
+  std::map<const network::Channel*, std::unique_ptr<t800sim::detail::ChannelSlot>> typed_;
 };
 
 }  // namespace workloads::levels
