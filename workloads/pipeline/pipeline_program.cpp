@@ -86,7 +86,8 @@ class PipelineProgram<T>::Levels {
       machine.spawn(nodes.e[std::size_t(e)], "level2", low, [this, e](Process& p) {
         levels::Level2<T>& level = *level2_[std::size_t(e)];
         if (settings.recovery) return level.checked(p);
-        levels::loop(serve_, p, [&level](Process& q) { return level.round(q); });
+        t800sim::Process level2(p);
+        levels::loop(serve_, level2, [&level](t800sim::Process& q) { return level.round(q); });
       });
     machine.spawn(nodes.l3, "level3", low, [this](Process& p) {
       if (settings.recovery) return void(level3_->checked(p));

@@ -73,7 +73,8 @@ struct Context {
 };
 
 // occam PAR; a single branch runs in place.
-inline void par(Process& p, const std::vector<Process::Body>& branches) {
+template <class AnyProcess>
+void par(AnyProcess& p, const std::vector<typename AnyProcess::Body>& branches) {
   if (branches.size() == 1) return branches.front()(p);
   p.par(branches);
 }
@@ -97,6 +98,10 @@ struct Shared {
     p.deschedule();
     while (!ready()) sc_core::wait(changed);
     p.reschedule();
+  }
+  template <class Ready>
+  void wait_until(t800sim::Process& p, Ready ready) {
+    wait_until(p.impl(), ready);
   }
   void notify() { changed.notify(sc_core::SC_ZERO_TIME); }
 };

@@ -8,18 +8,18 @@
 namespace workloads::levels {
 
 template <class T>
-bool Level2<T>::round(Process& p) {
+bool Level2<T>::round(t800sim::Process& p) {
   using RowMessage = typename M::RowMessage;
   const int e = e_;
   for (int k = 0; k < c_.n(); ++k) {
     if (!c_.shape.participates(k, e)) continue;
-    const PacketValue pivot_packet = c_.receive(p, &in());
+    const PacketValue pivot_packet = p.in(input());
     const typename M::Pivot pivot = M::pivot_of(pivot_packet);
     const std::vector<std::size_t> rows = c_.shape.rows_for(k, e);
     if (!pivot.ok) {
       // E1 tells L3; one behind the fan-in tells the fan-in, which waits for its rows.
       if (e == 0 || c_.wiring.e_behind_fan_in[std::size_t(e)])
-        c_.send(p, &out(), pivot_packet, kFailLabel);
+        p.out(output(), pivot_packet, kFailLabel);
       return false;
     }
     c_.report.level2(p.now_us(), true);
@@ -30,18 +30,18 @@ bool Level2<T>::round(Process& p) {
     PacketValue first;
     if (e == 0) {
       // E1 forwards the pivot row to L3 while it takes its first row.
-      std::vector<Process::Body> branches{
-          [&](Process& q) { c_.send(q, &out(), pivot_packet, "pivot row"); }};
-      if (!rows.empty()) branches.push_back([&](Process& q) { first = c_.receive(q, &in()); });
+      std::vector<t800sim::Process::Body> branches{
+          [&](t800sim::Process& q) { q.out(output(), pivot_packet, "pivot row"); }};
+      if (!rows.empty()) branches.push_back([&](t800sim::Process& q) { first = q.in(input()); });
       par(p, branches);
     }
     for (std::size_t r = 0; r < rows.size(); ++r) {
       const RowMessage row =
-          M::row_message_of((r == 0 && e == 0) ? std::move(first) : c_.receive(p, &in()));
+          M::row_message_of((r == 0 && e == 0) ? std::move(first) : p.in(input()));
       elimination::Row<typename M::C> done = c_.run_piece(
           p, "eliminate", [](auto& x, auto& j1) { return elimination::eliminate(x, j1); },
           named("row", row.values), named("pivot", pivot.row));
-      c_.send(p, &out(), M::to_packet(RowMessage{row.index, std::move(done)}), "row");
+      p.out(output(), M::to_packet(RowMessage{row.index, std::move(done)}), "row");
       c_.report.level2(p.now_us(), false);
     }
   }
@@ -53,7 +53,7 @@ bool Level2<T>::round(Process& p) {
 // eliminator hands row r on once the output process has taken row r - 1; the buffers are the
 // processes' own variables, so handing a row on costs nothing here (as Shared).
 template <class T>
-void Level2<T>::eliminate_buffered(Process& p, const PacketValue& pivot_packet,
+void Level2<T>::eliminate_buffered(t800sim::Process& p, const PacketValue& pivot_packet,
                                    const std::vector<std::size_t>& rows) {
   using RowMessage = typename M::RowMessage;
   const typename M::Pivot pivot = M::pivot_of(pivot_packet);
@@ -62,17 +62,17 @@ void Level2<T>::eliminate_buffered(Process& p, const PacketValue& pivot_packet,
   std::vector<PacketValue> taken(count);
   std::vector<RowMessage> done(count);
   std::size_t received = 0, started = 0, finished = 0, sent = 0;
-  std::vector<Process::Body> branches;
+  std::vector<t800sim::Process::Body> branches;
   if (count > 0) {
-    branches.push_back([&](Process& q) {  // input
+    branches.push_back([&](t800sim::Process& q) {  // input
       for (std::size_t r = 0; r < count; ++r) {
         buffer.wait_until(q, [&] { return started >= r; });
-        taken[r] = c_.receive(q, &in());
+        taken[r] = q.in(input());
         ++received;
         buffer.notify();
       }
     });
-    branches.push_back([&](Process& q) {  // eliminator
+    branches.push_back([&](t800sim::Process& q) {  // eliminator
       for (std::size_t r = 0; r < count; ++r) {
         buffer.wait_until(q, [&] { return received > r; });
         ++started;
@@ -88,13 +88,13 @@ void Level2<T>::eliminate_buffered(Process& p, const PacketValue& pivot_packet,
       }
     });
   }
-  branches.push_back([&](Process& q) {  // output; E1 forwards the pivot row first
-    if (e_ == 0) c_.send(q, &out(), pivot_packet, "pivot row");
+  branches.push_back([&](t800sim::Process& q) {  // output; E1 forwards the pivot row first
+    if (e_ == 0) q.out(output(), pivot_packet, "pivot row");
     for (std::size_t r = 0; r < count; ++r) {
       buffer.wait_until(q, [&] { return finished > r; });
       ++sent;
       buffer.notify();
-      c_.send(q, &out(), M::to_packet(done[r]), "row");
+      q.out(output(), M::to_packet(done[r]), "row");
       c_.report.level2(q.now_us(), false);
     }
   });

@@ -15,16 +15,22 @@ template <class T>
 class Level2 {
  public:
   Level2(const Context<T>& context, int e) : c_(context), e_(e) {}
-  // One system; false when the pipeline stops.
-  bool round(Process& p);
+  // One system; false when the pipeline stops. A process of the SDK: typed channels, packets.
+  bool round(t800sim::Process& p);
   // Recovery: every system until L1's stop.
   void checked(Process& p);
 
  private:
   using M = Messages<T>;
   using PacketValue = typename M::PacketValue;
-  void eliminate_buffered(Process& p, const PacketValue& pivot_packet,
+  void eliminate_buffered(t800sim::Process& p, const PacketValue& pivot_packet,
                           const std::vector<std::size_t>& rows);
+  t800sim::In<typename M::Packet> input() const {
+    return t800sim::In<typename M::Packet>(c_.wiring.typed(&in()));
+  }
+  t800sim::Out<typename M::Packet> output() const {
+    return t800sim::Out<typename M::Packet>(c_.wiring.typed(&out()));
+  }
   network::Channel& in() const { return *c_.wiring.e_in[std::size_t(e_)]; }
   network::Channel& out() const { return *c_.wiring.e_out[std::size_t(e_)]; }
 
