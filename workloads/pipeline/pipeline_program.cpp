@@ -65,7 +65,8 @@ class PipelineProgram<T>::Levels {
     if (settings.recovery && serve != Serve::once)
       throw std::invalid_argument("elimination pipeline: recovery serves one system only");
     M::register_faults();
-    wiring_ = levels::Wiring::plan(machine, shape, nodes, client, serve, M::stops);
+    wiring_ = levels::Wiring::plan(machine, shape, nodes, client, serve, spawn_fan_out<T>,
+                                   spawn_fan_in<T>);
     const levels::Context<T> context{settings, shape, nodes, wiring_, report_, pieces_, serve};
     // Recovery: a message that has started arrives within twice the longest message's time on a
     // link, and 10 us.

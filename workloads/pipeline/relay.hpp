@@ -8,8 +8,6 @@
 // failure or finish; which also ends a pipeline that serves until finish, pipeline_program.hpp).
 #pragma once
 
-#include <any>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,13 +26,15 @@ struct Relay {
   std::vector<int> served;  // level-2 processors (0-based) behind this relay, ascending
   // Fan-out: one input (from L1) and one output per served processor. Fan-in: the reverse.
   std::vector<network::Channel*> inputs, outputs;
-  // Whether a message's value is a stop (the header word's status flag, as occam's relay reads
-  // it): the relay passes it on and ends.
-  std::function<bool(const std::any& value)> stops;
 };
 
+// Processes of the SDK (t800sim::Process) forwarding packets of REAL T rows (levels/messages.hpp)
+// over typed channels; a stop (the header word's flag) they pass on and end.
+template <class T>
 void spawn_fan_out(network::Machine& machine, const PipelineShape& shape, const Relay& relay);
+template <class T>
 void spawn_fan_in(network::Machine& machine, const PipelineShape& shape, const Relay& relay);
+using SpawnRelay = void (*)(network::Machine&, const PipelineShape&, const Relay&);
 
 // The served processors of a relay that take part in step k, and the rows (in order) it carries.
 std::vector<int> relay_participants(const PipelineShape& shape, const Relay& relay, int k);

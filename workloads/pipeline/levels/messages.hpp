@@ -145,12 +145,6 @@ struct Messages {
     if (!ok) return {header::kStop, {}};
     return {0, std::vector<T>(qdd.begin(), qdd.end())};
   }
-  // Whether a message is a stop: a pivot message whose header word says failure or finish. A relay
-  // reads it as occam's would, and passes the message on.
-  static bool stops(const std::any& value) {
-    const PacketValue* packet = std::any_cast<PacketValue>(&value);
-    return packet && (std::get<0>(*packet) & header::kStop);
-  }
 
   // Recovery's messages (PipelineSettings::recovery): each carries the step it belongs to and a
   // checksum of its header word and REALs.

@@ -17,9 +17,8 @@ bool behind(const network::Machine& machine, int relay, int level, int node) {
 // A level-2 processor that is L1's neighbour gets a channel of its own; one behind the fan-out X
 // shares X's channel; any other gets a channel the network routes.
 void plan_level1_side(Wiring& w, network::Machine& machine, const PipelineShape& shape,
-                      const PipelineNodes& nodes, Serve serve, const Wiring::Stops& stops) {
+                      const PipelineNodes& nodes, Serve serve, SpawnRelay spawn) {
   Relay fan_out;
-  fan_out.stops = stops;
   fan_out.node = machine.topology().find("X");
   for (int e = 0; e < shape.m; ++e) {
     const int node = nodes.e[std::size_t(e)];
@@ -37,14 +36,13 @@ void plan_level1_side(Wiring& w, network::Machine& machine, const PipelineShape&
   fan_out.inputs.push_back(&machine.channel("L1->X", nodes.l1, fan_out.node));
   w.out_ports.push_back({fan_out.inputs.back(), fan_out.served});
   fan_out.rounds = serve == Serve::once ? 1 : Relay::kUntilStopped;
-  spawn_fan_out(machine, shape, fan_out);
+  spawn(machine, shape, fan_out);
 }
 
 // The same on L3's side, with the fan-in Y.
 void plan_level3_side(Wiring& w, network::Machine& machine, const PipelineShape& shape,
-                      const PipelineNodes& nodes, Serve serve, const Wiring::Stops& stops) {
+                      const PipelineNodes& nodes, Serve serve, SpawnRelay spawn) {
   Relay fan_in;
-  fan_in.stops = stops;
   fan_in.node = machine.topology().find("Y");
   for (int e = 0; e < shape.m; ++e) {
     const int node = nodes.e[std::size_t(e)];
@@ -66,17 +64,18 @@ void plan_level3_side(Wiring& w, network::Machine& machine, const PipelineShape&
   fan_in.outputs.push_back(&machine.channel("Y->L3", fan_in.node, nodes.l3));
   w.in_ports.push_back({fan_in.outputs.back(), fan_in.served});
   fan_in.rounds = serve == Serve::once ? 1 : Relay::kUntilStopped;
-  spawn_fan_in(machine, shape, fan_in);
+  spawn(machine, shape, fan_in);
 }
 
 }  // namespace
 
 Wiring Wiring::plan(network::Machine& machine, const PipelineShape& shape,
-                    const PipelineNodes& nodes, int client, Serve serve, const Stops& stops) {
+                    const PipelineNodes& nodes, int client, Serve serve, SpawnRelay fan_out,
+                    SpawnRelay fan_in) {
   Wiring w;
   w.input = &machine.channel("system", client, nodes.l1);
-  plan_level1_side(w, machine, shape, nodes, serve, stops);
-  plan_level3_side(w, machine, shape, nodes, serve, stops);
+  plan_level1_side(w, machine, shape, nodes, serve, fan_out);
+  plan_level3_side(w, machine, shape, nodes, serve, fan_in);
   w.back = &machine.channel("L3->L1", nodes.l3, nodes.l1);
   w.to_l4 = &machine.channel("L3->L4", nodes.l3, nodes.l4);
   if (serve == Serve::until_finish) w.reply = &machine.channel("qdd", nodes.l4, client);

@@ -4,8 +4,6 @@
 // only read it.
 #pragma once
 
-#include <any>
-#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -13,6 +11,7 @@
 #include "network/machine.hpp"
 #include "t800sim/channel.hpp"
 #include "workloads/pipeline/pipeline_program.hpp"
+#include "workloads/pipeline/relay.hpp"
 #include "workloads/pipeline/schedule.hpp"
 
 namespace workloads::levels {
@@ -34,11 +33,11 @@ struct Wiring {
   // The SDK's typed end (t800sim/channel.hpp) of each channel planned here (nullptr: none).
   t800sim::detail::ChannelSlot* typed(const network::Channel* channel) const;
 
-  // Whether a message's value is a stop (Relay::stops).
-  using Stops = std::function<bool(const std::any& value)>;
-  // Declares the channels (and spawns the relays) in the order the simulation has always made them.
+  // Declares the channels (and spawns the relays, spawn_fan_out<T> and spawn_fan_in<T> of the
+  // levels' precision) in the order the simulation has always made them.
   static Wiring plan(network::Machine& machine, const PipelineShape& shape,
-                     const PipelineNodes& nodes, int client, Serve serve, const Stops& stops);
+                     const PipelineNodes& nodes, int client, Serve serve, SpawnRelay fan_out,
+                     SpawnRelay fan_in);
 
   // Of a port's level-2 processors, those that take part in step k.
   static std::vector<int> takers(const PipelineShape& shape, const Port& port, int k);
