@@ -117,6 +117,12 @@ sc_time Cpu::slice_limit(const ProcessDescriptor& p, sc_time limit) {
   return limit;
 }
 
+std::int64_t Cpu::dma_late(const sc_time& t0) const {
+  std::int64_t n = 0;
+  for (const DmaEnd& d : dma_) n += d.link->dma_late(d.end, t0);
+  return n;
+}
+
 std::int64_t Cpu::dma_bytes(bool including_now) const {
   std::int64_t n = 0;
   for (const DmaEnd& d : dma_) n += d.link->dma_bytes(d.end, including_now);
@@ -151,6 +157,7 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
     const sc_time start = sc_time_stamp();
     if (halt_armed_ && halt_at_ > start) limit = std::min(limit, halt_at_ - start);
     const std::int64_t dma_before = stealing ? dma_bytes(true) : 0;
+    const sc_time block_start = sc_time_stamp();
     activity_.set_cpu(kind, label);
     sc_core::wait(limit, p.interrupt);
     activity_.set_cpu(ProcessorState::idle);
@@ -159,7 +166,8 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
     if (stealing) {  // every byte the link engines moved meanwhile took a memory cycle: the work
                      // takes longer
       const std::int64_t stolen =
-          std::max<std::int64_t>(0, dma_bytes(false) - dma_before) * timing::kLinkDmaCyclesPerByte;
+          std::max<std::int64_t>(0, dma_bytes(false) - dma_before - dma_late(block_start)) *
+          timing::kLinkDmaCyclesPerByte;
       stats_.stolen_cycles += stolen;
       remaining += cycles(stolen);
     }

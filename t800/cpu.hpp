@@ -84,6 +84,7 @@ class Cpu {
   bool timesliced() const { return fidelity_ != ComputeFidelity::block; }
   sc_core::sc_time slice_limit(const ProcessDescriptor& p, sc_core::sc_time limit);
   std::int64_t dma_bytes(bool including_now) const;
+  std::int64_t dma_late(const sc_core::sc_time& t0) const;
   void stop_if_halted(ProcessDescriptor& p);
 
   sc_core::sc_time cycle_;

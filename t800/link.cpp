@@ -127,6 +127,7 @@ bool Link::input_pending(int to) const {
 }
 
 void Link::DmaCount::add(std::int64_t n, const sc_time& at) {
+  if (queried && at == query_at && at == sc_time_stamp()) late += n;
   total += n;
   if (at > latest_at) {
     latest_at = at;
@@ -140,6 +141,10 @@ std::int64_t Link::dma_bytes(int e, bool including_now) const {
   const Direction& out = dir_[e];     // its data leaves through end e
   const Direction& in = dir_[1 - e];  // its data arrives at end e
   const sc_time now = sc_time_stamp();
+  if (including_now) {
+    out.dma_sent.query(now);
+    in.dma_received.query(now);
+  }
   std::int64_t n = including_now ? out.dma_sent.total + in.dma_received.total
                                  : out.dma_sent.before(now) + in.dma_received.before(now);
   if (now == SC_ZERO_TIME && !including_now) return n;
@@ -150,6 +155,10 @@ std::int64_t Link::dma_bytes(int e, bool including_now) const {
   if (in.closed_form.active && !in.closed_form.delivered && until >= data_packet_)
     n += bytes_started_by(in.closed_form, in.closed_form.bytes, until - data_packet_);
   return n;
+}
+
+std::int64_t Link::dma_late(int e, const sc_time& t0) const {
+  return dir_[e].dma_sent.late_at(t0) + dir_[1 - e].dma_received.late_at(t0);
 }
 
 // ---- packet level ----

@@ -90,6 +90,8 @@ class Link : public sc_core::sc_module {
   // written before it ran) and strictly before its end (the kernel may not have run that instant's
   // packet events yet).
   std::int64_t dma_bytes(int e, bool including_now) const;
+  // Bytes counted at instant t0 after the last dma_bytes(e, true) at t0 (see DmaCount).
+  std::int64_t dma_late(int e, const sc_core::sc_time& t0) const;
   // Messages that ran in closed form, and those handed over to the packet level mid-way.
   std::int64_t closed_form_messages() const { return closed_form_messages_; }
   std::int64_t handovers() const { return handovers_; }
@@ -99,6 +101,23 @@ class Link : public sc_core::sc_module {
   struct DmaCount {
     std::int64_t total = 0, latest = 0;
     sc_core::sc_time latest_at;
+    // Bytes moved at the instant a compute block starts are never charged to it, whichever process
+    // the kernel runs first at that instant (without this rule the charge depended on SystemC's
+    // order of processes woken at one time -- the tie order of its event queue -- so any change
+    // to the set of events could move a packet-level result; the closed form counts this way).
+    // The bytes counted at the block's start after its baseline was read are "late";
+    // Cpu::execute subtracts them.
+    mutable bool queried = false;
+    mutable sc_core::sc_time query_at;
+    mutable std::int64_t late = 0;
+    void query(const sc_core::sc_time& now) const {
+      queried = true;
+      query_at = now;
+      late = 0;
+    }
+    std::int64_t late_at(const sc_core::sc_time& t0) const {
+      return queried && query_at == t0 ? late : 0;
+    }
     void add(std::int64_t n, const sc_core::sc_time& at);
     std::int64_t before(const sc_core::sc_time& now) const {
       return total - (latest_at == now ? latest : 0);
