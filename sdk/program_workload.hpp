@@ -22,10 +22,6 @@ class ProgramWorkload : public workloads::Workload {
   workloads::ResultValue results(const network::Machine& machine) const override;
 
  private:
-  void join_channels(network::Machine& machine);
-  std::string end_process(const std::string& process, const ChannelSlot& slot) const;
-  const PlacedProcess& placed(const std::string& process, const std::string& channel) const;
-
   std::string kind_;
   std::unique_ptr<Program> program_;
   const network::Topology& topology_;
