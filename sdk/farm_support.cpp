@@ -105,17 +105,43 @@ std::vector<double> farm_busy_now(Process& p, const FarmPlan& plan) {
   return busy;
 }
 
-void farm_lost(Process& master, const FarmPlan& plan, std::size_t w) {
+namespace {
+// "P2, P5, P8": the workers of one failure (a halted processor takes its subtree with it).
+std::string names_of(const FarmPlan& plan, const std::vector<std::size_t>& ws) {
+  std::string s;
+  for (std::size_t w : ws) s += (s.empty() ? "" : ", ") + plan.worker_names[w];
+  return s;
+}
+}  // namespace
+
+void farm_lost(Process& master, const FarmPlan& plan, const std::vector<std::size_t>& ws) {
   network::Machine& m = machine_of(master);
-  m.faults().detected(m, m.topology().shortest_path(plan.master, plan.workers[w]),
-                      "the master's InputOrFail / OutputOrFail deadline (" + plan.worker_names[w] +
-                          " did not answer)");
+  const std::string by = "the master's InputOrFail / OutputOrFail deadline (" + names_of(plan, ws) +
+                         " did not answer)";
+  for (std::size_t w : ws)
+    m.faults().detected(m, m.topology().shortest_path(plan.master, plan.workers[w]), by);
 }
 
-void farm_recovered(Process& master, const FarmPlan& plan, std::size_t w, const std::string& to) {
+void farm_recovered(Process& master, const FarmPlan& plan, const std::vector<std::size_t>& ws,
+                    const std::string& to) {
+  network::Machine& m = machine_of(master);
+  const std::string how = "the master gave the tasks of " + names_of(plan, ws) + " to " + to;
+  for (std::size_t w : ws)
+    m.faults().recovered(m, m.topology().shortest_path(plan.master, plan.workers[w]), how);
+}
+
+void farm_corrupted(Process& master, const FarmPlan& plan, std::size_t w, bool order) {
+  network::Machine& m = machine_of(master);
+  const std::string& name = plan.worker_names[w];
+  m.faults().detected(m, m.topology().shortest_path(plan.master, plan.workers[w]),
+                      order ? name + "'s checksum of the master's order"
+                            : "the master's checksum of " + name + "'s reply");
+}
+
+void farm_resent(Process& master, const FarmPlan& plan, std::size_t w) {
   network::Machine& m = machine_of(master);
   m.faults().recovered(m, m.topology().shortest_path(plan.master, plan.workers[w]),
-                       "the master gave " + plan.worker_names[w] + "'s tasks to " + to);
+                       "the master sent " + plan.worker_names[w] + " its order again");
 }
 
 void farm_stop(Process& p, const std::string& why) {

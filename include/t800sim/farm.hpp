@@ -13,9 +13,12 @@
 //   explicit_allocation  the allocation is given as text, "P1: a b c; P2: d e" (errors name the
 //                        bad token)
 // Recovery (static and explicit, opt-in): the master's order and its wait for the reply give up at
-// a deadline (Process::out_or_fail / in_or_fail); a failed worker's tasks go to the others, and the
-// run's fault report says who noticed what and how the farm recovered. With `checksum`, orders and
-// replies carry a checksum, and a corrupted one counts as a failure of its worker.
+// a deadline (Process::out_or_fail / in_or_fail; routers on the way forward with the same
+// deadline, so a halted processor anywhere in a worker's subtree is noticed, not waited for); a
+// failed worker's tasks go to the others. Orders and replies then carry a checksum: a worker that
+// gets a corrupted order answers with an empty reply, a corrupted reply fails its check, and the
+// master sends that worker its order once more before giving it up. The run's fault report says
+// who noticed what and how the farm recovered.
 //
 //   using Farm = t800sim::Farm<REAL64, REAL64>;        // shared input, one result per task
 //   Farm farm(tasks, [](int task, const double& x) { return f(task, x); });
@@ -51,9 +54,6 @@ struct FarmOptions {
   // How long the master waits for a worker beyond its predicted time (0: that predicted time
   // again, plus 50 us).
   double timeout_us = 0;
-  // Orders and replies carry a checksum word (t800sim/farm_protocol.hpp): a corrupted one counts
-  // as its worker failing (recovery), or is ignored by the worker that receives it.
-  bool checksum = false;
 };
 
 // A task: its name (allocations and reports use it) and the kernel a worker runs for it, whose
@@ -89,8 +89,11 @@ double farm_predicted_us(Process& master, const FarmPlan& plan, std::size_t w,
                          const std::vector<FarmTask>& tasks, const std::vector<INT>& task_list,
                          std::int64_t bytes);
 std::vector<double> farm_busy_now(Process& p, const FarmPlan& plan);
-void farm_lost(Process& master, const FarmPlan& plan, std::size_t w);
-void farm_recovered(Process& master, const FarmPlan& plan, std::size_t w, const std::string& to);
+void farm_lost(Process& master, const FarmPlan& plan, const std::vector<std::size_t>& ws);
+void farm_corrupted(Process& master, const FarmPlan& plan, std::size_t w, bool order);
+void farm_resent(Process& master, const FarmPlan& plan, std::size_t w);
+void farm_recovered(Process& master, const FarmPlan& plan, const std::vector<std::size_t>& ws,
+                    const std::string& to);
 [[noreturn]] void farm_stop(Process& p, const std::string& why);
 }  // namespace detail
 
@@ -181,13 +184,22 @@ class Farm {
     return results_;
   }
 
-  // After the last round: every worker ends.
+  // After the last round: every worker ends. A worker given up may still be alive (its order was
+  // held up behind a router that waited for a halted processor): it is told too, one after the
+  // other, each with a deadline past every one given before, so that no router still holding a
+  // message for a halted processor makes it miss its own.
   void finish(Process& master) {
     std::vector<Process::Body> stop;
     for (std::size_t w = 0; w < plan_.workers.size(); ++w)
       if (has_work(w) && alive(w))
         stop.push_back([this, w](Process& branch) { branch.out(to_[w], seal(Order{})); });
     master.par(stop);
+    for (std::size_t w : lost_) {
+      const Order end = seal(Order{});
+      latest_deadline_us_ =
+          std::max(latest_deadline_us_, master.now_us()) + deadline_after(master, w, end);
+      master.out_or_fail(to_[w].out(), end, latest_deadline_us_);
+    }
   }
 
   const std::vector<FarmTask>& tasks() const { return tasks_; }
@@ -223,7 +235,7 @@ class Farm {
   static std::int64_t result_bytes() { return protocol<Result>::bytes(ResultValue{}); }
   template <class M>
   M seal(M m) const {
-    return detail::sealed(std::move(m), options_.checksum);
+    return detail::sealed(std::move(m), options_.recovery);
   }
 
   // Static: one reply from each worker, its results in its allocation's order.
@@ -274,7 +286,10 @@ class Farm {
     for (;;) {
       const Order order = p.in(to_[w]);
       if (order.kind == Order::Kind::finish) return;
-      if (!detail::intact(order)) continue;  // corrupted: the master's deadline recovers
+      if (!detail::intact(order)) {  // corrupted on the way: no results, the master asks again
+        p.out(from_[w], seal(Reply{}));
+        continue;
+      }
       if (on_demand())
         on_demand_round(p, w, order.shared);
       else
@@ -329,22 +344,43 @@ class Farm {
 
   // ---- recovery ----
 
-  // The order out, the reply back, each given up at its deadline: the worker's predicted time
-  // plus the timeout. A reply whose checksum fails counts as none.
+  enum class Answer { results, silent, corrupted };
+
+  // The order out, the reply back, each given up at its deadline; a corrupted reply, or an empty
+  // one (the worker's word that the order arrived corrupted), earns the order once more.
   bool exchange(Process& p, std::size_t w, Order order) {
     order = seal(std::move(order));
+    Answer a = exchange_once(p, w, order);
+    if (a != Answer::corrupted) return a == Answer::results;
+    a = exchange_once(p, w, order);
+    if (a == Answer::results) detail::farm_resent(p, plan_, w);
+    return a == Answer::results;
+  }
+
+  // How long the master waits for one step of an exchange: the worker's predicted time for the
+  // order's tasks and bytes, plus the timeout (or that time again and 50 us).
+  double deadline_after(Process& p, std::size_t w, const Order& order) const {
     const std::int64_t bytes =
         protocol<Shared>::bytes(order.shared) + std::int64_t(order.tasks.size()) * result_bytes();
     const double predicted = detail::farm_predicted_us(p, plan_, w, tasks_, order.tasks, bytes);
-    const double slack = options_.timeout_us > 0 ? options_.timeout_us : predicted + 50.0;
-    if (!p.out_or_fail(to_[w].out(), order, p.now_us() + predicted + slack)) return false;
-    const std::optional<Reply> reply = p.in_or_fail(from_[w].in(), p.now_us() + predicted + slack);
-    if (!reply || !detail::intact(*reply) || reply->results.size() != order.tasks.size())
-      return false;
+    return predicted + (options_.timeout_us > 0 ? options_.timeout_us : predicted + 50.0);
+  }
+
+  Answer exchange_once(Process& p, std::size_t w, const Order& order) {
+    const double wait = deadline_after(p, w, order);
+    latest_deadline_us_ = std::max(latest_deadline_us_, p.now_us() + wait);
+    if (!p.out_or_fail(to_[w].out(), order, p.now_us() + wait)) return Answer::silent;
+    const std::optional<Reply> reply = p.in_or_fail(from_[w].in(), p.now_us() + wait);
+    if (!reply) return Answer::silent;
+    const bool intact = detail::intact(*reply);
+    if (!intact || reply->results.size() != order.tasks.size()) {
+      detail::farm_corrupted(p, plan_, w, intact);
+      return Answer::corrupted;
+    }
     for (std::size_t i = 0; i < reply->results.size(); ++i)
       results_[std::size_t(order.tasks[i])] = reply->results[i];
     done_by_[w].insert(done_by_[w].end(), order.tasks.begin(), order.tasks.end());
-    return true;
+    return Answer::results;
   }
 
   // The failed workers' tasks go to the others, each to the surviving worker with the least
@@ -354,9 +390,10 @@ class Farm {
     recovery_started_us_ = p.now_us();
     while (!failed_.empty()) {
       std::vector<int> orphans;
+      std::sort(failed_.begin(), failed_.end());
+      detail::farm_lost(p, plan_, failed_);
       for (std::size_t w : failed_) {
         lost_.push_back(w);
-        detail::farm_lost(p, plan_, w);
         orphans.insert(orphans.end(), plan_.allocation[w].begin(), plan_.allocation[w].end());
         plan_.allocation[w].clear();
       }
@@ -383,7 +420,7 @@ class Farm {
       std::string to;
       for (std::size_t s : survivors)
         if (!extra[s].empty()) to += (to.empty() ? "" : ", ") + plan_.worker_names[s];
-      for (std::size_t w : lost_now) detail::farm_recovered(p, plan_, w, to);
+      detail::farm_recovered(p, plan_, lost_now, to);
     }
   }
 
@@ -421,6 +458,7 @@ class Farm {
   std::vector<std::size_t> failed_;  // this round's
   FarmRoundTiming timing_;
   double recovery_started_us_ = -1, recovery_done_us_ = -1;
+  double latest_deadline_us_ = 0;  // of any order the master sent
 };
 
 }  // namespace t800sim

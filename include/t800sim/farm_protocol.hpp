@@ -11,7 +11,7 @@
 //   reply, a round:      the results' bytes, in the order of the round's tasks
 //   reply, one task:     an INT (the task) and the result's bytes
 //
-// With `checksum` on (a farm that recovers), every order and reply also carries an INT checksum of
+// With recovery on (FarmOptions::recovery), every order and reply also carries an INT checksum of
 // its values, so a byte a link corrupted is caught by the end that receives it.
 #pragma once
 
