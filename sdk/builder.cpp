@@ -3,6 +3,7 @@
 #include "network/machine.hpp"
 #include "network/topology.hpp"
 #include "t800sim/program.hpp"
+#include "workloads/run/output_table.hpp"
 
 namespace t800sim {
 
@@ -87,6 +88,17 @@ detail::ChannelSlot* Builder::end(const std::string& name, const std::string& pr
 
 void Builder::code(const std::string& process, const Kernel& kernel) {
   code_.push_back({process, kernel});
+}
+
+Results& Results::table(const std::string& param, std::vector<std::string> columns,
+                        std::vector<std::vector<double>> rows) {
+  for (const auto& row : rows)
+    if (row.size() != columns.size())
+      throw std::logic_error("table for workload." + param + ": a row of " +
+                             std::to_string(row.size()) + " numbers under " +
+                             std::to_string(columns.size()) + " columns");
+  tables_.push_back({param, std::move(columns), std::move(rows)});
+  return *this;
 }
 
 double Results::cycle_ns(const std::string& processor) const {

@@ -32,8 +32,10 @@ void ProgramWorkload::build(network::Machine& machine) {
 workloads::ResultValue ProgramWorkload::results(const network::Machine& machine) const {
   workloads::ResultValue v;
   v.set("kind", kind_);
-  Results results(v, machine);
+  tables_.clear();
+  Results results(v, machine, tables_);
   program_->results(results);
+  check_tables();
   workloads::ResultValue placement = workloads::ResultValue::list();
   for (const PlacedProcess& p : placed_) {
     workloads::ResultValue r;
@@ -44,6 +46,19 @@ workloads::ResultValue ProgramWorkload::results(const network::Machine& machine)
   }
   v.set("placement", placement);
   return v;
+}
+
+// A table is written where one of the kind's output_file parameters says: any other name would be
+// a table nobody could ask for.
+void ProgramWorkload::check_tables() const {
+  const workloads::WorkloadInfo* info = workloads::find_workload(kind_);
+  for (const workloads::OutputTable& t : tables_) {
+    const workloads::ParamSpec* spec = info ? info->find(t.param) : nullptr;
+    if (!spec || spec->type != workloads::ParamType::output_file)
+      throw std::logic_error("workload " + kind_ + " reported a table for '" + t.param +
+                             "', which is not one of its output_file parameters "
+                             "(declare it with t800sim::output_file_param)");
+  }
 }
 
 }  // namespace t800sim::detail

@@ -20,14 +20,18 @@ class ProgramWorkload : public workloads::Workload {
 
   void build(network::Machine& machine) override;
   workloads::ResultValue results(const network::Machine& machine) const override;
+  std::vector<workloads::OutputTable> tables() const override { return tables_; }
 
  private:
+  void check_tables() const;
+
   std::string kind_;
   std::unique_ptr<Program> program_;
   const network::Topology& topology_;
   std::vector<workloads::PlacementEntry> scene_placement_;
   Builder builder_;  // owns the channels the processes' handles point to
   std::vector<PlacedProcess> placed_;
+  mutable std::vector<workloads::OutputTable> tables_;  // the program's, from results()
 };
 
 }  // namespace t800sim::detail

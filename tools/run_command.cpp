@@ -16,6 +16,7 @@
 #include "tools/run_progress.hpp"
 #include "tools/scene.hpp"
 #include "tools/scene_faults.hpp"
+#include "tools/table_files.hpp"
 #include "tools/trace_files.hpp"
 #include "workloads/params.hpp"
 #include "workloads/registry.hpp"
@@ -92,6 +93,7 @@ int run_scene(const RunArgs& args) {
   progress.end();
   std::cout << (args.json ? format_json(report) : format_text(report)) << std::flush;
   write_traces(report, args.traces);  // also after a deadlock: the trace shows who waited for whom
+  write_tables(report, inputs.params);
   if (!report.blocked.empty()) return kExitFailure;
   if (report.limit != network::Limit::none) {
     std::cerr << fmt::format(

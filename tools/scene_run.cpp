@@ -3,6 +3,7 @@
 #include "tools/report_format.hpp"
 #include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
+#include "tools/table_files.hpp"
 #include "workloads/run/run.hpp"
 
 namespace t800sim {
@@ -10,8 +11,9 @@ namespace t800sim {
 namespace {
 
 SceneRun run_checked(const std::string& scene_file, const std::vector<std::string>& overrides) {
-  const workloads::RunReport report =
-      workloads::run(tools::inputs_from(tools::load_scene(scene_file, overrides)));
+  const workloads::RunInputs inputs = tools::inputs_from(tools::load_scene(scene_file, overrides));
+  const workloads::RunReport report = workloads::run(inputs);
+  tools::write_tables(report, inputs.params);
   SceneRun r;
   r.report_json = tools::format_json(report);
   if (!report.blocked.empty()) {

@@ -30,6 +30,9 @@ namespace network {
 struct Topology;
 class Machine;
 }  // namespace network
+namespace workloads {
+struct OutputTable;
+}
 
 namespace t800sim {
 
@@ -146,12 +149,20 @@ using ResultValue = workloads::ResultValue;
 // What a program reports after its run, in the run's report (JSON and text) under `workload`.
 class Results {
  public:
-  Results(workloads::ResultValue& value, const network::Machine& machine)
-      : value_(value), machine_(machine) {}
+  Results(workloads::ResultValue& value, const network::Machine& machine,
+          std::vector<workloads::OutputTable>& tables)
+      : value_(value), machine_(machine), tables_(tables) {}
   Results& set(const std::string& key, workloads::ResultValue v) {
     value_.set(key, std::move(v));
     return *this;
   }
+  // A table for one of the program's output_file parameters (output_file_param): t800sim writes it
+  // as CSV where the scene's parameter says -- a header of the column names, then one line per row,
+  // numbers to 17 significant digits -- or nothing when the parameter is empty. Throws
+  // std::logic_error when `param` is not an output_file parameter of the program's kind, or a row's
+  // length is not the columns'.
+  Results& table(const std::string& param, std::vector<std::string> columns,
+                 std::vector<std::vector<double>> rows);
   double cycle_ns(const std::string& processor) const;             // the processor's clock period
   std::string processor_type(const std::string& processor) const;  // "T800-20"
   double simulated_us() const;
@@ -159,6 +170,7 @@ class Results {
  private:
   workloads::ResultValue& value_;
   const network::Machine& machine_;
+  std::vector<workloads::OutputTable>& tables_;
 };
 
 class Program {

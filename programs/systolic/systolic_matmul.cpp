@@ -42,6 +42,7 @@ class Systolic : public Program {
         b_(std::size_t(p.integer("block"))),
         n_(std::size_t(g_) * b_),
         overlap_(p.flag("overlap")),
+        write_c_(!p.text("output_csv").empty()),
         a_(matrix(n_, 1)),
         bm_(matrix(n_, 2)),
         c_(std::size_t(g_ * g_)) {
@@ -95,6 +96,7 @@ class Systolic : public Program {
     r.set("channels", std::int64_t(2 * g_ * (g_ - 1)));
     r.set("max_abs_error", max_error());
     r.set("c_checksum", checksum());
+    if (write_c_) r.table("output_csv", column_names(), c_rows());
   }
 
  private:
@@ -198,19 +200,36 @@ class Systolic : public Program {
     return worst;
   }
 
+  // Element (row, col) of the whole C, from the block of the cell that computed it.
+  Value c_at(std::size_t row, std::size_t col) const {
+    return c_[std::size_t(cell(int(row / b_), int(col / b_)))][(row % b_) * b_ + col % b_];
+  }
+
   // The checksum of C, row-major over the whole matrix (programs/support/checksum.hpp).
   std::string checksum() const {
     std::vector<float> c;  // C row-major over the whole matrix, as REAL32
     for (std::size_t row = 0; row < n_; ++row)
-      for (std::size_t col = 0; col < n_; ++col)
-        c.push_back(
-            float(c_[std::size_t(cell(int(row / b_), int(col / b_)))][(row % b_) * b_ + col % b_]));
+      for (std::size_t col = 0; col < n_; ++col) c.push_back(float(c_at(row, col)));
     return programs::fnv1a_hex(c);
+  }
+
+  // C for workload.output_csv: one line per row, columns c1 ... cn.
+  std::vector<std::string> column_names() const {
+    std::vector<std::string> names;
+    for (std::size_t col = 1; col <= n_; ++col) names.push_back("c" + std::to_string(col));
+    return names;
+  }
+  std::vector<std::vector<double>> c_rows() const {
+    std::vector<std::vector<double>> rows(n_);
+    for (std::size_t row = 0; row < n_; ++row)
+      for (std::size_t col = 0; col < n_; ++col) rows[row].push_back(double(c_at(row, col)));
+    return rows;
   }
 
   int g_;
   std::size_t b_, n_;
   bool overlap_;
+  bool write_c_;               // workload.output_csv is set
   std::vector<float> a_, bm_;  // A and B, n x n row-major
   std::vector<Values> c_;      // C's blocks, by cell
   std::vector<std::string> processors_;
@@ -232,7 +251,10 @@ T800SIM_WORKLOAD(systolic_matmul) {
                      1, 64),
        flag_param("overlap", true,
                   "communicate in PAR with the multiply (false: one after the other)"),
-       precision_param("precision", "real32", "occam REAL32 or REAL64 arithmetic and blocks")},
+       precision_param("precision", "real32", "occam REAL32 or REAL64 arithmetic and blocks"),
+       output_file_param("output_csv",
+                         "C as CSV (one line per row, columns c1 ... cn), relative to the scene; "
+                         "empty = none")},
       [](const Params& p, const Network& n) -> std::unique_ptr<Program> {
         if (p.text("precision") == "real64") return std::make_unique<Systolic<Real64>>(p, n);
         return std::make_unique<Systolic<Real32>>(p, n);

@@ -6,6 +6,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -66,6 +69,33 @@ TEST(SystolicMatmul, OverlapHidesTheLinksAndTheBoundsHold) {
   EXPECT_GE(t_off, grid * (step_us + 2 * transfer_us));
   EXPECT_LT(t_on, t_off);
   EXPECT_EQ(on["workload"]["c_checksum"], off["workload"]["c_checksum"]);
+}
+
+// workload.output_csv: C as the program's table, written by t800sim -- every element the textbook
+// loop's float, read back exactly.
+TEST(SystolicMatmul, TheCsvHoldsC) {
+  const std::size_t n = 32;
+  const std::string path = std::string(T800SIM_BINARY_DIR) + "/systolic-c.csv";
+  std::remove(path.c_str());
+  product(" --set workload.output_csv=" + path);
+  std::ifstream csv(path);
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line)) << path;
+  EXPECT_EQ(line.rfind("c1,c2,", 0), 0u) << line;
+  const std::vector<float> a = systolic::matrix(n, 1), b = systolic::matrix(n, 2);
+  for (std::size_t i = 0; i < n; ++i) {
+    ASSERT_TRUE(std::getline(csv, line)) << "row " << i;
+    std::stringstream cells(line);
+    std::string cell;
+    for (std::size_t j = 0; j < n; ++j) {
+      ASSERT_TRUE(std::getline(cells, cell, ',')) << "row " << i << " column " << j;
+      float c = 0;
+      for (std::size_t k = 0; k < n; ++k) c = c + a[i * n + k] * b[k * n + j];
+      EXPECT_EQ(std::stod(cell), double(c)) << "C(" << i << ", " << j << ")";
+    }
+    EXPECT_FALSE(std::getline(cells, cell)) << "row " << i << " has more than " << n << " columns";
+  }
+  EXPECT_FALSE(std::getline(csv, line)) << "more than " << n << " rows";
 }
 
 TEST(SystolicMatmul, AGridLargerThanTheNetworkIsAnError) {

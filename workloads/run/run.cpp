@@ -207,6 +207,7 @@ RunReport run(const RunInputs& in) {
     report.failure = unrecovered_fault(report);
     if (report.failure.empty()) {
       report.workload = workload->results(machine);
+      report.tables = workload->tables();
       report.failure = failure_of(report.workload);
     }
   }

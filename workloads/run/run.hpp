@@ -10,6 +10,7 @@
 #include "workloads/dynamics/robot_model.hpp"
 #include "workloads/params.hpp"
 #include "workloads/placement.hpp"
+#include "workloads/run/output_table.hpp"
 #include "workloads/run/result_value.hpp"
 
 namespace workloads {
@@ -91,6 +92,7 @@ struct RunReport {
   // which.
   std::string failure;
   ResultValue workload;
+  std::vector<OutputTable> tables;  // for the workload's output files (Workload::tables)
   std::vector<TraceTrack>
       tracks;  // only with RunInputs.options.keep_intervals (a trace is asked for)
   // What each injected fault did; processes a fault left waiting for ever are listed there, not

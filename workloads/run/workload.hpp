@@ -5,12 +5,14 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "network/machine.hpp"
 #include "workloads/dynamics/robot_model.hpp"
 #include "workloads/params.hpp"
 #include "workloads/placement.hpp"
 #include "workloads/registry.hpp"
+#include "workloads/run/output_table.hpp"
 #include "workloads/run/result_value.hpp"
 
 namespace workloads {
@@ -20,6 +22,9 @@ class Workload {
   virtual ~Workload() = default;
   virtual void build(network::Machine& machine) = 0;
   virtual ResultValue results(const network::Machine& machine) const = 0;
+  // After results(): the tables to write to the workload's output_file parameters (none by
+  // default; tools/ writes each where its parameter says).
+  virtual std::vector<OutputTable> tables() const { return {}; }
 };
 
 // What a workload is made from: its validated parameters, the network, the robot model for

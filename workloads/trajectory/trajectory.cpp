@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <optional>
@@ -23,7 +22,7 @@
 #include "workloads/pipeline/pipeline_program.hpp"
 #include "workloads/registry.hpp"
 #include "workloads/run/operation_mix.hpp"
-#include "workloads/run/output_file.hpp"
+#include "workloads/trajectory/step_reuse.hpp"
 
 namespace workloads {
 
@@ -128,23 +127,11 @@ PipelineNodes pipeline_nodes(const network::Topology& t, int m) {
   return find_pipeline_nodes(t, m);
 }
 
-struct StepTimes {
-  double step_us = 0, dynamics_us = 0, solve_us = 0, integration_us = 0, communication_us = 0;
-};
-
 // Simulated microseconds between two instants, from their exact difference (so that a step of the
 // same length gives the same number wherever it lies in time).
 double us_between(const sc_core::sc_time& from, const sc_core::sc_time& to) {
   return (to - from).to_seconds() * 1e6;
 }
-
-// ---- Step reuse (fidelity.reuse_steps) ----
-// What one simulated step did to the machine's accounting (network/activity_delta.hpp) and its
-// split.
-struct StepDelta {
-  network::ActivityDelta activity;
-  StepTimes times;
-};
 
 struct StepRecord {
   double t = 0;
@@ -189,12 +176,7 @@ class Trajectory : public Workload {
     progress_ = m.options().progress;
     subtasks_ = farm_.subtasks();
     skip_numerics_asked_ = m.options().fidelity.skip_numerics;
-    if (!m.options().fidelity.reuse_steps)
-      reuse_off_ = "fidelity.reuse_steps = false";
-    else if (m.options().fidelity.compute == t800::ComputeFidelity::fine)
-      reuse_off_ =
-          "compute fidelity 'fine' wakes every CPU at the absolute timeslice ticks: no step is "
-          "translation-invariant";
+    reuse_.emplace(m.options());
     auto& state = m.channel("state", network::Machine::kHost, master_);
     m.spawn(network::Machine::kHost, "host", t800::Priority::low, [&state](Process& p) {
       p.out(state, {2 * dynamics::kJoints * std::int64_t(sizeof(S)), {}, "initial state"});
@@ -206,6 +188,7 @@ class Trajectory : public Workload {
   }
 
   ResultValue results(const network::Machine&) const override;
+  std::vector<OutputTable> tables() const override;
 
  private:
   // The master's PROC for one integration step, recorded: the state's arrays in, the next state's
@@ -296,46 +279,31 @@ class Trajectory : public Workload {
     std::vector<int> signature;
   };
 
-  // One step, simulated or reused. The master takes the CPU afresh at every step boundary (a
-  // zero-time deschedule and reschedule: its timeslice starts there, whatever came before), so a
-  // reused step leaves the scheduler as a simulated one does.
+  // One step, simulated or reused (step_reuse.hpp). The master takes the CPU afresh at every step
+  // boundary (a zero-time deschedule and reschedule: its timeslice starts there, whatever came
+  // before), so a reused step leaves the scheduler as a simulated one does.
   integration::State<S> advance(Process& p, double t, const integration::State<S>& x,
                                 StepTimes& times) {
     fresh_slice(p);
-    if (!reuse_off_.empty()) {
-      ++simulated_;
-      return step(p, t, x, times);
+    std::optional<Sequential> seq;
+    if (reuse_->enabled()) {
+      // The step's numbers by the sequential numerics, and with them its signature: every
+      // data-dependent branch of the step.
+      seq = sequential(t, x);
+      if (reuse_->replay(p, seq->signature, seq->solved ? "" : "the sequential solve failed",
+                         times))
+        return seq->next;
     }
-    network::Machine& m = p.machine();
-    // The step's numbers by the sequential numerics, and with them its signature: every
-    // data-dependent branch of the step.
-    const Sequential seq = sequential(t, x);
-    std::string why = seq.solved ? network::unquiet(m) : "the sequential solve failed";
-    if (!why.empty() && seq.solved) why += " at the step's start";
-    if (why.empty()) {
-      const auto known = recorded_.find(seq.signature);
-      if (known != recorded_.end()) {
-        replay(p, known->second, times);
-        ++reused_;
-        return seq.next;
-      }
-    }
-    const network::ActivitySnapshot before = network::snapshot(m);
+    reuse_->simulating(p.machine());
     simulated_signature_.clear();
-    ++simulated_;
     integration::State<S> next;
     try {
       next = step(p, t, x, times);
     } catch (const SolveFailed&) {
-      ++simulated_because_[why.empty() ? "the pipeline's solve failed" : why];
+      reuse_->failed("the pipeline's solve failed");
       throw;
     }
-    if (why.empty()) why = invariance(m, before, seq, next);
-    if (why.empty()) {
-      recorded_.emplace(seq.signature, StepDelta{network::delta_since(m, before), times});
-      why = "the first step of its signature (recorded)";
-    }
-    ++simulated_because_[why];
+    if (seq) reuse_->simulated(p.machine(), seq->signature, disagreement(*seq, next), times);
     return next;
   }
 
@@ -344,30 +312,15 @@ class Trajectory : public Workload {
     p.reschedule();
   }
 
-  // Why the step just simulated may not stand for later steps of its signature; empty when it may.
-  std::string invariance(network::Machine& m, const network::ActivitySnapshot& before,
-                         const Sequential& seq, const integration::State<S>& next) const {
-    if (network::clock_events(m) != before.clock)
-      return "a CPU's timeslice clock was involved (t800::CpuStatistics clock_dependent or "
-             "timeslices changed): the step is not translation-invariant";
-    const std::string busy = network::unquiet(m);
-    if (!busy.empty()) return busy + " at the step's end";
+  // Why the simulated step's numbers may not stand for its signature: empty when they are the
+  // sequential numerics' (the pivots and the state).
+  std::string disagreement(const Sequential& seq, const integration::State<S>& next) const {
     if (simulated_signature_ != seq.signature)
       return "the pipeline's pivots differ from the sequential solver's";
     for (int i = 0; i < dynamics::kJoints; ++i)
       if (!(next.q(i) == seq.next.q(i) && next.qd(i) == seq.next.qd(i)))
         return "the simulated state differs from the sequential numerics'";
     return {};
-  }
-
-  // A step identical to a recorded one: the master lets the recorded duration pass (every other
-  // process stays blocked, waiting for input, as it would be between steps), and the recorded work
-  // is credited to every processor and link.
-  void replay(Process& p, const StepDelta& d, StepTimes& times) {
-    const sc_core::sc_time start = sc_core::sc_time_stamp();
-    sc_core::wait(d.activity.duration);
-    network::credit(p.machine(), d.activity, start);
-    times = d.times;
   }
 
   Sequential sequential(double t, const integration::State<S>& x) const {
@@ -478,8 +431,6 @@ class Trajectory : public Workload {
     return inside;
   }
 
-  void write_csv() const;
-  ResultValue reuse_report() const;
   ResultValue split(const std::vector<StepRecord>& steps) const;
 
   const dynamics::RobotModel& model_;
@@ -491,14 +442,9 @@ class Trajectory : public Workload {
   std::vector<dynamics::Subtask> subtasks_;  // the farm's, in its order
   dynamics::DynamicsData<S> data_;
   bool skip_numerics_asked_ = false;
-  // Step reuse: why it is off for the whole run (empty: on), the recorded steps by signature, the
-  // pivots the pipeline reported in the step being simulated, and the counts for the report.
-  std::string reuse_off_;
-  std::map<std::vector<int>, StepDelta> recorded_;
-  std::vector<int> simulated_signature_;
-  std::int64_t simulated_ = 0, reused_ = 0;
-  std::map<std::string, std::int64_t> simulated_because_;
-  std::vector<StepRecord> records_;  // one per step, and the final state
+  std::optional<StepReuse> reuse_;        // from the machine's options, at build()
+  std::vector<int> simulated_signature_;  // the pipeline's pivots in the step being simulated
+  std::vector<StepRecord> records_;       // one per step, and the final state
   std::vector<LimitViolation> violations_;
   std::array<bool, dynamics::kJoints> outside_{};
   int steps_outside_ = 0;
@@ -509,29 +455,6 @@ class Trajectory : public Workload {
 ResultValue joint_values(const JointVector& v) {
   ResultValue out = ResultValue::list();
   for (int i = 0; i < dynamics::kJoints; ++i) out.push(v(i));
-  return out;
-}
-
-// How many steps were simulated and how many reused, and why steps were simulated.
-template <class S>
-ResultValue Trajectory<S>::reuse_report() const {
-  ResultValue out;
-  out.set("enabled", reuse_off_.empty());
-  if (!reuse_off_.empty()) out.set("refused", reuse_off_);
-  out.set("simulated_steps", simulated_);
-  out.set("reused_steps", reused_);
-  out.set("signatures_recorded", std::int64_t(recorded_.size()));
-  ResultValue because = ResultValue::list();
-  for (const auto& [why, count] : simulated_because_) {
-    ResultValue row;
-    row.set("reason", why);
-    row.set("steps", count);
-    because.push(row);
-  }
-  out.set("simulated_because", because);
-  out.set(
-      "traces",
-      "a reused step's intervals are the recorded step's, shifted in time (traces keep reuse on)");
   return out;
 }
 
@@ -590,39 +513,37 @@ ResultValue Trajectory<S>::results(const network::Machine&) const {
   r.set("limit_violations", exits);
   r.set("steps_outside_limits", steps_outside_);
   if (!failure_.empty()) r.set("failure", failure_);
-  r.set("step_reuse", reuse_report());
+  r.set("step_reuse", reuse_->report());
   if (skip_numerics_asked_)
     r.set("numerics",
           "computed: fidelity.skip_numerics is ignored, a trajectory integrates its numbers and "
           "its pivots can change the schedule");
   r.set("final_q", joint_values(records_.back().q));
   r.set("final_qd", joint_values(records_.back().qd));
-  if (!s_.output_csv.empty()) {
-    write_csv();
-    r.set("output_csv", s_.output_csv);
-  }
+  if (!s_.output_csv.empty()) r.set("output_csv", s_.output_csv);  // written by tools/ (tables())
   return r;
 }
 
 // t, q, q̇, τ and the step's simulated time and split; the last row is the final state.
 template <class S>
-void Trajectory<S>::write_csv() const {
-  OutputFile file(s_.output_csv, "workload.output_csv");
-  std::ostream& out = file.out();
-  out.precision(17);
-  out << "t";
+std::vector<OutputTable> Trajectory<S>::tables() const {
+  if (s_.output_csv.empty()) return {};
+  OutputTable table{"output_csv", {"t"}, {}};
   for (const char* name : {"q", "qd", "tau"})
-    for (int i = 1; i <= dynamics::kJoints; ++i) out << ',' << name << i;
-  out << ",step_us,dynamics_us,solve_us,integration_us,communication_us\n";
+    for (int i = 1; i <= dynamics::kJoints; ++i) table.columns.push_back(name + std::to_string(i));
+  for (const char* name :
+       {"step_us", "dynamics_us", "solve_us", "integration_us", "communication_us"})
+    table.columns.emplace_back(name);
   for (const StepRecord& r : records_) {
-    out << r.t;
+    std::vector<double> row{r.t};
     for (const JointVector* v : {&r.q, &r.qd, &r.tau})
-      for (int i = 0; i < dynamics::kJoints; ++i) out << ',' << (*v)(i);
+      for (int i = 0; i < dynamics::kJoints; ++i) row.push_back((*v)(i));
     const StepTimes& s = r.times;
-    out << ',' << s.step_us << ',' << s.dynamics_us << ',' << s.solve_us << ',' << s.integration_us
-        << ',' << s.communication_us << '\n';
+    row.insert(row.end(),
+               {s.step_us, s.dynamics_us, s.solve_us, s.integration_us, s.communication_us});
+    table.rows.push_back(std::move(row));
   }
-  file.commit();
+  return {table};
 }
 
 }  // namespace
