@@ -101,11 +101,11 @@ template <class Shared, class Result>
 class Farm {
  public:
   using SharedValue = value_of<Shared>;
-  using ResultValue = value_of<Result>;
+  using TaskResult = value_of<Result>;
   // What a worker computes for a task, after its kernel's time has been taken (pure C++).
-  using Work = std::function<ResultValue(int task, const SharedValue& shared)>;
+  using Work = std::function<TaskResult(int task, const SharedValue& shared)>;
   using Order = FarmOrder<SharedValue>;
-  using Reply = FarmReply<ResultValue>;
+  using Reply = FarmReply<TaskResult>;
 
   Farm(std::vector<FarmTask> tasks, Work work, FarmOptions options = {})
       : tasks_(std::move(tasks)), work_(std::move(work)), options_(std::move(options)) {
@@ -150,8 +150,8 @@ class Farm {
 
   // One round, from the master's process: `shared` to every worker, each task's result back
   // (indexed as the tasks are).
-  std::vector<ResultValue> round(Process& master, const SharedValue& shared) {
-    results_.assign(tasks_.size(), ResultValue{});
+  std::vector<TaskResult> round(Process& master, const SharedValue& shared) {
+    results_.assign(tasks_.size(), TaskResult{});
     done_by_.assign(plan_.workers.size(), {});
     next_ = 0;
     failed_.clear();
@@ -232,7 +232,7 @@ class Farm {
   std::vector<INT> allocation(std::size_t w) const {
     return {plan_.allocation[w].begin(), plan_.allocation[w].end()};
   }
-  static std::int64_t result_bytes() { return protocol<Result>::bytes(ResultValue{}); }
+  static std::int64_t result_bytes() { return protocol<Result>::bytes(TaskResult{}); }
   template <class M>
   M seal(M m) const {
     return detail::sealed(std::move(m), options_.recovery);
@@ -326,7 +326,7 @@ class Farm {
            }});
   }
 
-  ResultValue run_task(Process& p, INT t, const SharedValue& shared) {
+  TaskResult run_task(Process& p, INT t, const SharedValue& shared) {
     const FarmTask& task = tasks_[std::size_t(t)];
     p.compute(task.kernel, task.name);
     return work_(t, shared);
@@ -450,7 +450,7 @@ class Farm {
   std::vector<Chan<FarmOrders<Shared>>> to_;
   std::vector<Chan<FarmReplies<Result>>> from_;
   std::vector<Chan<INT>> queue_;
-  std::vector<ResultValue> results_;
+  std::vector<TaskResult> results_;
   std::vector<std::vector<int>> done_by_;
   std::vector<int> order_;
   int next_ = 0;
