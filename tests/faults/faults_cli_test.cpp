@@ -68,21 +68,26 @@ INSTANTIATE_TEST_SUITE_P(EachKind, PipelineRecovery,
                                            "kind=dead-link,link=L1-E3,at_us=200",
                                            "kind=halt,processor=E3,at_us=300"));
 
-class FarmRecovery : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(FarmRecovery, GivesTheFaultFreeDchBitForBit) {
-  const json clean = run_json(kFarm, 0);
-  const json faulty = run_json(
-      std::string(kFarm) + " --set workload.recovery=true --fault '" + GetParam() + "'", 0);
+// The farm `scene` with recovery and `fault` recovers, gives the fault-free D, C, h bit for bit,
+// and every subtask is done, by the workers left.
+void expect_farm_recovers(const std::string& scene, const std::string& fault) {
+  const json clean = run_json(scene, 0);
+  const json faulty = run_json(scene + " --set workload.recovery=true --fault '" + fault + "'", 0);
   expect_recovered(faulty);
   for (const char* key : {"D", "c", "h"}) {
     ASSERT_TRUE(clean["workload"].contains(key));
     EXPECT_EQ(faulty["workload"][key], clean["workload"][key]) << key;
   }
-  // Every subtask was done, by the workers left.
   std::size_t done = 0;
   for (const json& w : faulty["workload"]["per_worker"]) done += w["subtasks"].size();
   EXPECT_EQ(done, 64u);
+  EXPECT_FALSE(faulty.contains("deadlock"));
+}
+
+class FarmRecovery : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FarmRecovery, GivesTheFaultFreeDchBitForBit) {
+  expect_farm_recovers(kFarm, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(EachKind, FarmRecovery,
@@ -101,19 +106,7 @@ INSTANTIATE_TEST_SUITE_P(EachKind, FarmRecovery,
 class FarmRecoveryBehindRouters : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(FarmRecoveryBehindRouters, GivesTheFaultFreeDchBitForBit) {
-  const std::string farm9 = "configs/scenes/dynamics-farm.toml --set network.workers=9";
-  const json clean = run_json(farm9, 0);
-  const json faulty =
-      run_json(farm9 + " --set workload.recovery=true --fault '" + GetParam() + "'", 0);
-  expect_recovered(faulty);
-  for (const char* key : {"D", "c", "h"}) {
-    ASSERT_TRUE(clean["workload"].contains(key));
-    EXPECT_EQ(faulty["workload"][key], clean["workload"][key]) << key;
-  }
-  std::size_t done = 0;
-  for (const json& w : faulty["workload"]["per_worker"]) done += w["subtasks"].size();
-  EXPECT_EQ(done, 64u);
-  EXPECT_FALSE(faulty.contains("deadlock"));
+  expect_farm_recovers("configs/scenes/dynamics-farm.toml --set network.workers=9", GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(EachKind, FarmRecoveryBehindRouters,
