@@ -116,6 +116,9 @@ class Farm {
     if (options_.recovery && on_demand())
       throw std::invalid_argument("a farm recovers with a static or explicit schedule");
   }
+  // Its processes hold on to it: it stays where it was built.
+  Farm(const Farm&) = delete;
+  Farm& operator=(const Farm&) = delete;
 
   // Declares one worker process on each of `worker_processors` ("worker[i]") and the channels
   // between them and `master`, a process declared before (its placement is where the schedule
@@ -131,7 +134,7 @@ class Farm {
        worker(p, std::size_t(w));
      }).placed_on(worker_processors);
     for (int w = 0; w < n; ++w) {
-      const std::string me = "worker[" + std::to_string(w) + "]";
+      const std::string me = member(std::size_t(w));
       const std::string& at = worker_processors[std::size_t(w)];
       to_.push_back(b.channel<FarmOrders<Shared>>("to " + at, master, me));
       from_.push_back(b.channel<FarmReplies<Result>>("from " + at, me, master));
@@ -140,11 +143,10 @@ class Farm {
     for (std::size_t w = 0; w < worker_processors.size(); ++w) {
       if (!has_work(w)) continue;
       // Its tasks' PROCs (on demand, or recovering, it may get any of them).
-      const std::string me = "worker[" + std::to_string(w) + "]";
       if (on_demand() || options_.recovery)
-        for (const FarmTask& t : tasks_) b.code(me, t.kernel);
+        for (const FarmTask& t : tasks_) b.code(member(w), t.kernel);
       else
-        for (int t : plan_.allocation[w]) b.code(me, tasks_[std::size_t(t)].kernel);
+        for (int t : plan_.allocation[w]) b.code(member(w), tasks_[std::size_t(t)].kernel);
     }
   }
 
@@ -222,6 +224,7 @@ class Farm {
  private:
   static constexpr INT kEndOfRound = -1;
 
+  static std::string member(std::size_t w) { return "worker[" + std::to_string(w) + "]"; }
   bool on_demand() const { return options_.schedule == FarmSchedule::on_demand; }
   // A static schedule may leave a worker without tasks (more workers than tasks): it waits for the
   // end of the farm only.
