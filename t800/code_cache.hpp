@@ -25,7 +25,7 @@ class CodeCache {
     std::shared_ptr<const codegen::Recording> kernel;  // kept alive: the cache is keyed by it
     codegen::CodeUnit unit;
   };
-  std::map<std::tuple<const codegen::Recording*, bool, bool>, Compiled> units_;
+  std::map<std::tuple<const codegen::Recording*, bool, bool, bool>, Compiled> units_;
 };
 
 }  // namespace t800

@@ -42,6 +42,13 @@ const codegen::CodeUnit& ComputeModel::code(
   return *compiled(kernel).unit;
 }
 
+const codegen::CodeUnit& ComputeModel::annotated_code(
+    const std::shared_ptr<const codegen::Recording>& kernel) const {
+  codegen::Target annotated = target();
+  annotated.notes = true;
+  return code_->unit(kernel, annotated);
+}
+
 MemoryView ComputeModel::memory_view(const codegen::CodeUnit& unit) const {
   return memory_.view(unit.name, int(unit.arrays.size()));
 }

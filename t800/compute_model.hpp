@@ -45,8 +45,11 @@ class ComputeModel {
   // input), timed with this processor's table and its workspace's placement.
   std::int64_t process_cycles(const isa::Sequence& code) const;
 
-  // This processor's code for a recorded kernel (compiled once).
+  // This processor's code for a recorded kernel (compiled once), as timed: without listing notes.
   const codegen::CodeUnit& code(const std::shared_ptr<const codegen::Recording>& kernel) const;
+  // The same code with each instruction's note, for listings (compiled again on first use).
+  const codegen::CodeUnit& annotated_code(
+      const std::shared_ptr<const codegen::Recording>& kernel) const;
   // Its timing with this processor's memory map; per-instruction times for listings if asked.
   SequenceTime time(const codegen::CodeUnit& unit) const;
   MemoryView memory_view(const codegen::CodeUnit& unit) const;
@@ -57,14 +60,15 @@ class ComputeModel {
 
   const ProcessorModel& processor() const { return processor_; }
   const ComputeSettings& settings() const { return settings_; }
-  codegen::Target target() const { return {processor_.has_fpu, settings_.checked}; }
+  // What its code is compiled for; no notes: nothing but a listing reads them.
+  codegen::Target target() const { return {processor_.has_fpu, settings_.checked, false}; }
   double cycle_ns() const { return processor_.cycle_ns; }
   const CostModel& mix_model() const { return mix_; }
 
  private:
   struct Compiled {
     const codegen::CodeUnit* unit = nullptr;  // in code_
-    std::int64_t cycles = -1;  // -1: not timed yet (timing needs the memory map)
+    std::int64_t cycles = -1;                 // -1: not timed yet (timing needs the memory map)
   };
   Compiled& compiled(const std::shared_ptr<const codegen::Recording>& kernel) const;
 

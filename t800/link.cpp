@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <string>
 
 #include "t800/link_timing.hpp"
 #include "t800/payload_bytes.hpp"
@@ -15,12 +16,18 @@ using sc_core::SC_ZERO_TIME;
 
 namespace {
 
-void spawn_method(const std::function<void()>& body, sc_core::sc_event& trigger, const char* name) {
+// "wire0", "detect1", ...: unique within the link.
+std::string role(const char* what, int d) {
+  return what + std::to_string(d);
+}
+
+void spawn_method(const std::function<void()>& body, sc_core::sc_event& trigger, const char* what,
+                  int d) {
   sc_core::sc_spawn_options options;
   options.spawn_method();
   options.dont_initialize();
   options.set_sensitivity(&trigger);
-  sc_core::sc_spawn(body, sc_core::sc_gen_unique_name(name), &options);
+  sc_core::sc_spawn(body, role(what, d).c_str(), &options);
 }
 
 }  // namespace
@@ -41,12 +48,23 @@ Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, Proces
   for (int d = 0; d < 2; ++d) {
     dir_[d].activity.merge_gaps_below(
         data_packet_);  // a trace shows a streaming message as one interval
-    sc_core::sc_spawn([this, d] { wire_thread(d); }, sc_core::sc_gen_unique_name("wire"));
-    spawn_method([this, d] { on_detect(d); }, dir_[d].detect_event, "detect");
-    spawn_method([this, d] { on_ack_processed(d); }, dir_[d].process_event, "ackproc");
-    spawn_method([this, d] { on_closed_form(d); }, dir_[d].closed_form.milestone, "closedform");
+    sc_core::sc_spawn([this, d] { wire_thread(d); }, role("wire", d).c_str());
+    spawn_method([this, d] { on_detect(d); }, dir_[d].detect_event, "detect", d);
+    spawn_method([this, d] { on_ack_processed(d); }, dir_[d].process_event, "ackproc", d);
+    spawn_method([this, d] { on_closed_form(d); }, dir_[d].closed_form.milestone, "closedform", d);
   }
 }
+
+Link::ClosedForm::ClosedForm(int d) : milestone(role("milestone", d).c_str()) {}
+
+Link::Direction::Direction(int d)
+    : sent_event(role("sent", d).c_str()),
+      submitted_event(role("submitted", d).c_str()),
+      delivered_event(role("delivered", d).c_str()),
+      wire_wake(role("wire_wake", d).c_str()),
+      detect_event(role("detect_event", d).c_str()),
+      process_event(role("process_event", d).c_str()),
+      closed_form(d) {}
 
 std::int64_t Link::submit(int from, Message message) {
   Direction& d = dir_[from];

@@ -107,6 +107,7 @@ class Link : public sc_core::sc_module {
   // A message of one direction following the closed form: its schedule is a function of when it
   // started and when its receiver's input was armed.
   struct ClosedForm {
+    explicit ClosedForm(int d);
     bool active = false;
     std::int64_t bytes = 0;
     sc_core::sc_time start;     // its first data packet starts
@@ -139,7 +140,11 @@ class Link : public sc_core::sc_module {
     bool now() const { return armed && sc_core::sc_time_stamp() >= at; }
   };
 
+  // Every event and process of a link is named after its role and direction: SystemC would
+  // otherwise generate a unique name for each (a search per name), a sixth of the set-up of a
+  // 1024-transputer network.
   struct Direction {
+    explicit Direction(int d);
     // sending DMA
     std::list<Message> queue;
     std::int64_t sent = 0, acked = 0;
@@ -213,7 +218,7 @@ class Link : public sc_core::sc_module {
   sc_core::sc_time bit_, data_packet_, ack_packet_, detect_delay_, process_delay_, byte_period_;
   std::int64_t closed_form_messages_ = 0, handovers_ = 0;
   ProcessorActivity* end_[2];
-  Direction dir_[2];
+  Direction dir_[2]{Direction(0), Direction(1)};
 };
 
 }  // namespace t800

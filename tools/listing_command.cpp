@@ -61,7 +61,7 @@ int list(const ListingArgs& args) {
   std::vector<std::string> names;
   for (const network::Machine::DeclaredCode& d : machine.declared_code()) {
     const t800::ComputeModel& model = machine.compute_model(d.node);
-    const t800::codegen::CodeUnit& unit = model.code(d.kernel);
+    const t800::codegen::CodeUnit& unit = model.annotated_code(d.kernel);
     names.push_back(unit.name);
     if (unit.name != args.kernel) continue;
     if (!args.processor.empty() && machine.node_name(d.node) != args.processor) continue;

@@ -288,6 +288,7 @@ int ExpressionEmitter::need_expanded(int n) {
 // How a listing names an operand: an array element as subscripted, a constant by its value, a
 // local variable by its node number, an inlined subexpression as (...).
 std::string ExpressionEmitter::describe(int n) const {
+  if (!sink_.target().notes) return {};
   n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
   if (temporary(n)) return "t" + std::to_string(n);

@@ -361,12 +361,26 @@ class Generator : public EmitSink {
 
 }  // namespace
 
+namespace {
+
+void drop_notes(CodeUnit& unit) {
+  for (CodeRun& run : unit.runs)
+    for (isa::Instruction& in : run.code) in.note.clear();
+}
+
+}  // namespace
+
 // Two passes: the first finds the code's and the frame's sizes, which the second writes into the
-// operands that depend on them (ajw, the distance to the constant table after the code).
+// operands that depend on them (ajw, the distance to the constant table after the code). Only the
+// second pass's code is kept, so the first makes no notes.
 CodeUnit generate(const Recording& recording, const Target& target) {
-  Generator first(recording, target, Sizes{});
+  Target sizing = target;
+  sizing.notes = false;
+  Generator first(recording, sizing, Sizes{});
   first.run();
-  return Generator(recording, target, first.sizes()).run();
+  CodeUnit unit = Generator(recording, target, first.sizes()).run();
+  if (!target.notes) drop_notes(unit);  // what is left of them (their fixed words)
+  return unit;
 }
 
 std::int64_t CodeUnit::executed_instructions() const {

@@ -8,7 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "workloads/dynamics/evaluate.hpp"
+#include "workloads/dynamics/state.hpp"
+#include "workloads/dynamics/term_sweep.hpp"
 
 namespace dynamics {
 
@@ -25,21 +26,20 @@ std::optional<ModelVariant> parse_model_variant(const std::string& text) {
 std::vector<TermMagnitude> analyse_terms(const RobotModel& model,
                                          const std::vector<Subtask>& terms) {
   std::mt19937_64 rng(0x7800);  // fixed: the derived sets must not change from run to run
-  std::vector<WorkerInput<double>> samples;
+  std::vector<std::vector<Folded<double>>> values;  // [sample][term]
   for (int s = 0; s < kZeroSamples; ++s) {
-    samples.push_back(make_worker_input<double>(model, random_configuration(model, rng)));
+    const auto input = make_worker_input<double>(model, random_configuration(model, rng));
+    values.push_back(evaluate_terms(model, terms, input));
   }
   std::vector<TermMagnitude> result;
   std::map<TermKind, double> scale;
-  for (const Subtask& term : terms) {
-    TermMagnitude m{term};
-    for (const WorkerInput<double>& input : samples) {
-      const Folded<double> value = evaluate_term(model, term, input);
-      m.structural = value.is_zero();
-      if (m.structural) break;  // the same for every configuration
-      m.max_abs = std::max(m.max_abs, std::abs(value.value()));
-    }
-    scale[term.kind] = std::max(scale[term.kind], m.max_abs);
+  for (std::size_t t = 0; t < terms.size(); ++t) {
+    TermMagnitude m{terms[t]};
+    m.structural = values.front()[t].is_zero();  // the same for every configuration
+    if (!m.structural)
+      for (const std::vector<Folded<double>>& sample : values)
+        m.max_abs = std::max(m.max_abs, std::abs(sample[t].value()));
+    scale[m.term.kind] = std::max(scale[m.term.kind], m.max_abs);
     result.push_back(m);
   }
   for (TermMagnitude& m : result) {
@@ -70,26 +70,29 @@ bool involves(const Subtask& term, int joint) {
 PaperSimplification paper_simplification(const RobotModel& model) {
   const std::vector<TermMagnitude> analysis = analyse_terms(model, all_terms());
   std::vector<TermMagnitude> present;
-  for (const TermMagnitude& m : analysis)
-    if (!m.zero) present.push_back(m);
+  std::vector<Subtask> coriolis;  // only these can be dropped
+  for (const TermMagnitude& m : analysis) {
+    if (m.zero) continue;
+    present.push_back(m);
+    if (m.term.kind == TermKind::coriolis) coriolis.push_back(m.term);
+  }
   const int last = kJoints - 1;
   RobotModel simplified = model;
   simplified.joints[last].link.inertia.z() = 0;
-  // Analysed together with all the other terms: the zero threshold is relative to each kind's
-  // scale.
-  const std::vector<TermMagnitude> without = analyse_terms(simplified, nonzero(analysis));
+  // Analysed together: the zero threshold is relative to the scale of all the Coriolis terms.
+  const std::vector<TermMagnitude> without = analyse_terms(simplified, coriolis);
   PaperSimplification p;
   p.smallest_kept = std::numeric_limits<double>::infinity();
-  for (std::size_t t = 0; t < without.size(); ++t) {
-    const TermMagnitude& m = without[t];
-    const bool coriolis = m.term.kind == TermKind::coriolis;
-    if (m.zero && coriolis && involves(m.term, last)) {
+  std::size_t c = 0;  // the next Coriolis term's verdict in `without`
+  for (const TermMagnitude& m : present) {
+    const bool is_coriolis = m.term.kind == TermKind::coriolis;
+    if (is_coriolis && without[c++].zero && involves(m.term, last)) {
       p.dropped.push_back(m.term);
-      p.largest_dropped = std::max(p.largest_dropped, present[t].max_abs);
+      p.largest_dropped = std::max(p.largest_dropped, m.max_abs);
       continue;
     }
     p.kept.push_back(m.term);
-    if (coriolis) p.smallest_kept = std::min(p.smallest_kept, present[t].max_abs);
+    if (is_coriolis) p.smallest_kept = std::min(p.smallest_kept, m.max_abs);
   }
   if (std::isinf(p.smallest_kept)) p.smallest_kept = 0;
   return p;

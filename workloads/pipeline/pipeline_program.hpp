@@ -2,7 +2,7 @@
 // client process (the host for Table 6, the farm's master in a trajectory) sends one system at a
 // time to L1 and, when the program serves until finish(), gets q̈ back from L4; the levels loop
 // over rounds until the client calls finish(). The levels, their channels and the relays are
-// described in pipeline.hpp.
+// described in pipeline.hpp; each level is a process of its own in levels/.
 //
 // A failed round (no usable pivot, a non-finite value) stops every level, as in the one-shot
 // pipeline: the client gets the failure and must not send again (finish() is then a no-op).
@@ -99,7 +99,7 @@ class PipelineProgram {
   class Levels;
 
  private:
-  std::unique_ptr<Levels> levels_;  // the processes' state (pipeline_program.cpp)
+  std::unique_ptr<Levels> levels_;  // the level processes, their channels, the report
 };
 
 extern template class PipelineProgram<float>;

@@ -1,0 +1,277 @@
+// A pipeline skeleton: stages in order, each a process (or a group of processes) on a processor,
+// joined by typed channels, served in rounds: a client feeds an item per round into the first
+// stage and takes the round's result from the last. Each stage's function turns one item into the
+// next stage's item; the skeleton writes the processes and channels an occam programmer would:
+//
+//   SEQ r = 0 FOR rounds             -- a stage, unbuffered: takes, works, gives
+//     in ? x; y := f(x); out ! y
+//
+//   PAR                              -- buffered: input, worker, output joined by one-item
+//     SEQ r ... in ? x; take ! x     -- buffers (internal channels), so the next item comes in
+//     SEQ r ... take ? x; give ! f(x)  -- and the last goes out while one is worked on
+//     SEQ r ... give ? y; out ! y
+//
+// A group of k processes (a parallel stage, like the elimination's level 2) is dealt the rounds
+// round-robin: member i works on rounds i, i + k, ...; the stages before and after it send to and
+// take from the member whose round it is, so items stay in order.
+//
+//   const auto pipe = t800sim::pipeline<REAL64>()
+//       .stage<REAL64>("square", [](Process& p, double x) { p.compute(500); return x * x; })
+//       .on("P1")
+//       .group<INT>("round", 2, [](Process& p, double x) { p.compute(900); return INT(x); })
+//       .on({"P2", "P3"}).buffered()
+//       .build(b, "client", "client", rounds);
+//   b.process("client", [pipe, rounds](Process& p) {
+//     for (int r = 0; r < rounds; ++r) {     // one item in flight; a feeder and a collector in
+//       p.out(pipe.in(r), 1.5 * r);          // PAR keep every stage busy
+//       INT y = p.in(pipe.out(r));
+//     }
+//   });
+#pragma once
+
+#include <algorithm>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "t800sim/channel.hpp"
+#include "t800sim/kernel.hpp"
+#include "t800sim/process.hpp"
+#include "t800sim/program.hpp"
+
+namespace t800sim {
+
+namespace detail {
+
+// Where a stage sits: the stage before it (or the feeder) and after it (or the collector), their
+// sizes, the rounds. Channels are named after the stages they join.
+struct StageWiring {
+  std::string before, after;
+  int before_count = 1, after_count = 1;
+  int rounds = 0;
+};
+
+// A declared stage, its types erased: declares its processes and its ends of the channels.
+struct StageSpec {
+  std::string name;
+  int count = 1;
+  bool group = false;
+  bool buffered = false;
+  std::vector<std::string> on;
+  std::vector<Kernel> code;
+  std::function<void(Builder&, const StageSpec&, const StageWiring&)> declare;
+};
+
+// A member's process name: name[i] in a group, name for one process.
+std::string member(const std::string& name, bool group, int i);
+// The channel between `from` (member j) and `to` (member i) of neighbouring stages.
+std::string link_name(const std::string& from, const std::string& to, int j, int i);
+// Member i of a stage of `count` talks to the members of a neighbour of `other` that share one of
+// its rounds: round r is on member r % count here and r % other there.
+std::vector<int> partners(int i, int count, int other, int rounds);
+// A stage's processes: a group name[0..count-1], or one process `name`.
+ProcessDecl& members(Builder& b, const std::string& name, int count, bool group,
+                     Process::IndexedBody body);
+
+// Member i's internal channel from process `from` to `to` of the same stage.
+template <class P>
+Chan<P> internal(Builder& b, const std::string& name, const std::string& from,
+                 const std::string& to, bool group, int i) {
+  return b.channel<P>(name + "[" + std::to_string(i) + "]", member(from, group, i),
+                      member(to, group, i));
+}
+
+// Both ends' channels of member i, indexed by the neighbour's member (unused ones stay empty).
+template <class P>
+std::vector<In<P>> inputs_of(Builder& b, const StageWiring& w, const std::string& stage,
+                             const std::string& process, bool group, int i, int count) {
+  std::vector<In<P>> in(std::size_t(w.before_count));
+  for (int j : partners(i, count, w.before_count, w.rounds))
+    in[std::size_t(j)] = b.input<P>(link_name(w.before, stage, j, i), member(process, group, i));
+  return in;
+}
+template <class P>
+std::vector<Out<P>> outputs_of(Builder& b, const StageWiring& w, const std::string& stage,
+                               const std::string& process, bool group, int i, int count) {
+  std::vector<Out<P>> out(std::size_t(w.after_count));
+  for (int j : partners(i, count, w.after_count, w.rounds))
+    out[std::size_t(j)] = b.output<P>(link_name(stage, w.after, i, j), member(process, group, i));
+  return out;
+}
+
+}  // namespace detail
+
+// The client's ends of a built pipeline: in(r) takes round r's item, out(r) gives its result.
+template <class In_, class Out_>
+class Pipeline {
+ public:
+  const Out<In_>& in(int round) const { return entry_.at(std::size_t(round) % entry_.size()); }
+  const In<Out_>& out(int round) const { return exit_.at(std::size_t(round) % exit_.size()); }
+
+  std::vector<Out<In_>> entry_;  // one per member of the first stage
+  std::vector<In<Out_>> exit_;   // one per member of the last
+};
+
+// A pipeline as it is declared: items enter as First; the stages so far give Last.
+template <class First, class Last>
+class PipelineDecl {
+ public:
+  PipelineDecl() = default;
+  explicit PipelineDecl(std::vector<detail::StageSpec> stages) : stages_(std::move(stages)) {}
+
+  // A stage of one process: f(process, item) -> the next stage's item.
+  template <class Next, class F>
+  PipelineDecl<First, Next> stage(const std::string& name, F f) && {
+    return std::move(*this).template add<Next>(name, 1, false, std::move(f));
+  }
+  // A parallel stage of `count` processes, name[0..count-1], dealt the rounds round-robin.
+  template <class Next, class F>
+  PipelineDecl<First, Next> group(const std::string& name, int count, F f) && {
+    if (count < 1)
+      throw std::invalid_argument("pipeline stage " + name +
+                                  ": a group needs at least one process");
+    return std::move(*this).template add<Next>(name, count, true, std::move(f));
+  }
+  // The last stage's processors: one, or one per member of a group (a scene's [placement]
+  // overrides them by the processes' names).
+  PipelineDecl on(std::vector<std::string> processors) && {
+    last().on = std::move(processors);
+    return std::move(*this);
+  }
+  PipelineDecl on(const std::string& processor) && {
+    return std::move(*this).on(std::vector<std::string>{processor});
+  }
+  // The last stage as input, worker and output processes in PAR, joined by one-item buffers:
+  // name_input, name, name_output, on the same processor.
+  PipelineDecl buffered() && {
+    last().buffered = true;
+    return std::move(*this);
+  }
+  // A kernel the last stage's worker runs, counted in its processor's memory (Builder::code).
+  PipelineDecl code(const Kernel& kernel) && {
+    last().code.push_back(kernel);
+    return std::move(*this);
+  }
+
+  // Declares every stage's processes and channels: `feeder` sends round r's item into the first
+  // stage, `collector` takes its result from the last (both names of processes the program
+  // declares; they may be one). Every stage serves `rounds` items and ends.
+  Pipeline<First, Last> build(Builder& b, const std::string& feeder, const std::string& collector,
+                              int rounds) const {
+    if (stages_.empty()) throw std::invalid_argument("a pipeline needs at least one stage");
+    if (rounds < 0) throw std::invalid_argument("a pipeline serves zero or more rounds");
+    for (std::size_t s = 0; s < stages_.size(); ++s) {
+      detail::StageWiring w;
+      w.rounds = rounds;
+      w.before = s == 0 ? feeder : stages_[s - 1].name;
+      w.before_count = s == 0 ? 1 : stages_[s - 1].count;
+      const bool last_stage = s + 1 == stages_.size();
+      w.after = last_stage ? collector : stages_[s + 1].name;
+      w.after_count = last_stage ? 1 : stages_[s + 1].count;
+      stages_[s].declare(b, stages_[s], w);
+    }
+    Pipeline<First, Last> ends;
+    const detail::StageSpec &head = stages_.front(), &tail = stages_.back();
+    // Members beyond the rounds' number take nothing: no channel to them.
+    for (int i = 0; i < std::min(head.count, rounds); ++i)
+      ends.entry_.push_back(b.output<First>(detail::link_name(feeder, head.name, 0, i), feeder));
+    for (int i = 0; i < std::min(tail.count, rounds); ++i)
+      ends.exit_.push_back(b.input<Last>(detail::link_name(tail.name, collector, i, 0), collector));
+    return ends;
+  }
+
+ private:
+  template <class, class>
+  friend class PipelineDecl;
+
+  detail::StageSpec& last() {
+    if (stages_.empty()) throw std::logic_error("a pipeline's settings follow a stage");
+    return stages_.back();
+  }
+
+  template <class Next, class F>
+  PipelineDecl<First, Next> add(const std::string& name, int count, bool group, F f) && {
+    detail::StageSpec spec;
+    spec.name = name;
+    spec.count = count;
+    spec.group = group;
+    using Work = std::function<value_of<Next>(Process&, const value_of<Last>&)>;
+    spec.declare = [work = Work(std::move(f))](Builder& b, const detail::StageSpec& s,
+                                               const detail::StageWiring& w) {
+      declare_stage<Last, Next>(b, s, w, work);
+    };
+    stages_.push_back(std::move(spec));
+    return PipelineDecl<First, Next>(std::move(stages_));
+  }
+
+  template <class In_, class Out_, class Work>
+  static void declare_stage(Builder& b, const detail::StageSpec& s, const detail::StageWiring& w,
+                            const Work& work) {
+    auto placed = [&](ProcessDecl& d) {
+      if (!s.on.empty()) d.placed_on(s.on);
+    };
+    std::vector<std::vector<In<In_>>> in;
+    std::vector<std::vector<Out<Out_>>> out;
+    for (int i = 0; i < s.count; ++i) {
+      const std::string end = s.buffered ? s.name + "_input" : s.name;
+      const std::string start = s.buffered ? s.name + "_output" : s.name;
+      in.push_back(detail::inputs_of<In_>(b, w, s.name, end, s.group, i, s.count));
+      out.push_back(detail::outputs_of<Out_>(b, w, s.name, start, s.group, i, s.count));
+    }
+    // Member i's rounds: i, i + count, ...; round r comes from the member of the stage before
+    // whose round it is, and goes to the one after.
+    const auto rounds_of = [count = s.count, rounds = w.rounds, bc = w.before_count,
+                            ac = w.after_count](int i, auto each) {
+      for (int r = i; r < rounds; r += count) each(r, std::size_t(r % bc), std::size_t(r % ac));
+    };
+    for (int i = 0; i < s.count; ++i)
+      for (const Kernel& k : s.code) b.code(detail::member(s.name, s.group, i), k);
+    const auto stage = [&](const std::string& name, Process::IndexedBody body) {
+      placed(detail::members(b, name, s.count, s.group, std::move(body)));
+    };
+    if (!s.buffered) {
+      stage(s.name, [=](Process& p, int i) {
+        rounds_of(i, [&](int, std::size_t from, std::size_t to) {
+          p.out(out[std::size_t(i)][to], work(p, p.in(in[std::size_t(i)][from])));
+        });
+      });
+      return;
+    }
+    std::vector<Chan<In_>> take;
+    std::vector<Chan<Out_>> give;
+    for (int i = 0; i < s.count; ++i) {
+      take.push_back(
+          detail::internal<In_>(b, s.name + ".take", s.name + "_input", s.name, s.group, i));
+      give.push_back(
+          detail::internal<Out_>(b, s.name + ".give", s.name, s.name + "_output", s.group, i));
+    }
+    stage(s.name + "_input", [=](Process& p, int i) {
+      rounds_of(i, [&](int, std::size_t from, std::size_t) {
+        p.out(take[std::size_t(i)], p.in(in[std::size_t(i)][from]));
+      });
+    });
+    stage(s.name, [=](Process& p, int i) {
+      rounds_of(i, [&](int, std::size_t, std::size_t) {
+        p.out(give[std::size_t(i)], work(p, p.in(take[std::size_t(i)])));
+      });
+    });
+    stage(s.name + "_output", [=](Process& p, int i) {
+      rounds_of(i, [&](int, std::size_t, std::size_t to) {
+        p.out(out[std::size_t(i)][to], p.in(give[std::size_t(i)]));
+      });
+    });
+  }
+
+  std::vector<detail::StageSpec> stages_;
+};
+
+// A pipeline whose items enter as protocol First (no stages yet).
+template <class First>
+PipelineDecl<First, First> pipeline() {
+  return {};
+}
+
+}  // namespace t800sim

@@ -1,0 +1,148 @@
+#include "workloads/pipeline/levels/level2.hpp"
+
+#include <any>
+
+#include "network/reliable.hpp"
+
+namespace workloads::levels {
+
+template <class T>
+bool Level2<T>::round(Process& p) {
+  using Pivot = typename M::Pivot;
+  using RowMessage = typename M::RowMessage;
+  const int e = e_;
+  for (int k = 0; k < c_.n(); ++k) {
+    if (!c_.shape.participates(k, e)) continue;
+    t800::Message pivot_message = p.in(in());
+    const auto& pivot = std::any_cast<const Pivot&>(pivot_message.payload);
+    const std::vector<std::size_t> rows = c_.shape.rows_for(k, e);
+    if (!pivot.ok) {
+      // E1 tells L3; one behind the fan-in tells the fan-in, which waits for its rows.
+      if (e == 0 || c_.wiring.e_behind_fan_in[std::size_t(e)]) p.out(out(), pivot_message);
+      return false;
+    }
+    c_.report.level2(p.now_us(), true);
+    if (c_.settings.buffered) {
+      eliminate_buffered(p, pivot_message, rows);
+      continue;
+    }
+    std::vector<t800::Message> first(1);
+    if (e == 0) {
+      // E1 forwards the pivot row to L3 while it takes its first row.
+      std::vector<Process::Body> branches{[&](Process& q) { q.out(out(), pivot_message); }};
+      if (!rows.empty()) branches.push_back([&](Process& q) { first[0] = q.in(in()); });
+      par(p, branches);
+    }
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      t800::Message received = (r == 0 && e == 0) ? std::move(first[0]) : p.in(in());
+      const auto& row = std::any_cast<const RowMessage&>(received.payload);
+      elimination::Row<typename M::C> done = c_.run_piece(
+          p, "eliminate", [](auto& x, auto& j1) { return elimination::eliminate(x, j1); },
+          named("row", row.values), named("pivot", pivot.row));
+      p.out(out(), message(RowMessage{row.index, std::move(done)}, "row"));
+      c_.report.level2(p.now_us(), false);
+    }
+  }
+  return true;
+}
+
+// One step: input, eliminator and output in PAR, joined by one-row buffers. The input process
+// takes row r once the eliminator has started on row r - 1 (it then holds one row), and the
+// eliminator hands row r on once the output process has taken row r - 1; the buffers are the
+// processes' own variables, so handing a row on costs nothing here (as Shared).
+template <class T>
+void Level2<T>::eliminate_buffered(Process& p, const t800::Message& pivot_message,
+                                   const std::vector<std::size_t>& rows) {
+  using RowMessage = typename M::RowMessage;
+  const auto& pivot = std::any_cast<const typename M::Pivot&>(pivot_message.payload);
+  Shared& buffer = buffer_;
+  const std::size_t count = rows.size();
+  std::vector<t800::Message> taken(count);
+  std::vector<RowMessage> done(count);
+  std::size_t received = 0, started = 0, finished = 0, sent = 0;
+  std::vector<Process::Body> branches;
+  if (count > 0) {
+    branches.push_back([&](Process& q) {  // input
+      for (std::size_t r = 0; r < count; ++r) {
+        buffer.wait_until(q, [&] { return started >= r; });
+        taken[r] = q.in(in());
+        ++received;
+        buffer.notify();
+      }
+    });
+    branches.push_back([&](Process& q) {  // eliminator
+      for (std::size_t r = 0; r < count; ++r) {
+        buffer.wait_until(q, [&] { return received > r; });
+        ++started;
+        buffer.notify();
+        const auto& row = std::any_cast<const RowMessage&>(taken[r].payload);
+        elimination::Row<typename M::C> values = c_.run_piece(
+            q, "eliminate", [](auto& x, auto& j1) { return elimination::eliminate(x, j1); },
+            named("row", row.values), named("pivot", pivot.row));
+        buffer.wait_until(q, [&] { return sent >= r; });
+        done[r] = RowMessage{row.index, std::move(values)};
+        ++finished;
+        buffer.notify();
+      }
+    });
+  }
+  branches.push_back([&](Process& q) {  // output; E1 forwards the pivot row first
+    if (e_ == 0) q.out(out(), pivot_message);
+    for (std::size_t r = 0; r < count; ++r) {
+      buffer.wait_until(q, [&] { return finished > r; });
+      ++sent;
+      buffer.notify();
+      q.out(out(), message(std::move(done[r]), "row"));
+      c_.report.level2(q.now_us(), false);
+    }
+  });
+  par(p, branches);
+}
+
+// Recovery: checks each message's checksum, eliminates the intact rows with an intact pivot row,
+// marks the others damaged, and sends every row on with its own checksum. An output level 3 does
+// not take within the timeout is given up (level 3 asks for the row again), so the processor
+// always comes back to take what L1 sends.
+template <class T>
+void Level2<T>::checked(Process& p) {
+  using CheckedPivot = typename M::CheckedPivot;
+  using CheckedRow = typename M::CheckedRow;
+  const bool growth_check = c_.settings.rule.growth_check();
+  auto send = [&](t800::Message m) {
+    network::out_or_fail(p, out(), std::move(m), p.now_us() + c_.settings.timeout_us);
+  };
+  // L1 may give up a message half-way (this processor was slow, or a fault): each message says
+  // what it is, so a pivot row may come where a row was due.
+  CheckedPivot pivot;
+  bool pivot_intact = false;
+  for (;;) {
+    t800::Message m = p.in(in());
+    if (const auto* next = std::any_cast<CheckedPivot>(&m.payload)) {
+      pivot = *next;
+      if (pivot.stop) return;
+      c_.report.level2(p.now_us(), true);
+      c_.charge_checksum(p, pivot.row.size() + 1);
+      pivot_intact = pivot.sum() == pivot.checksum;
+      if (pivot.forward) send(message(pivot, pivot.bytes(growth_check), "pivot row"));
+      continue;
+    }
+    const auto& row = std::any_cast<const CheckedRow&>(m.payload);
+    c_.charge_checksum(p, row.values.size());
+    CheckedRow done{row.step, row.index, true, {}, 0};
+    if (pivot_intact && row.step == pivot.step && row.sum() == row.checksum) {
+      done.bad = false;
+      done.values = c_.run_piece(
+          p, "eliminate", [](auto& x, auto& j1) { return elimination::eliminate(x, j1); },
+          named("row", row.values), named("pivot", pivot.row));
+      c_.charge_checksum(p, done.values.size());
+    }
+    done.checksum = done.sum();
+    send(message(done, "row"));
+    c_.report.level2(p.now_us(), false);
+  }
+}
+
+template class Level2<float>;
+template class Level2<double>;
+
+}  // namespace workloads::levels

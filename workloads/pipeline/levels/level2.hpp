@@ -1,0 +1,38 @@
+// A level-2 processor E_i: takes each step's pivot row and the rows L1 deals it, eliminates their
+// leading element and sends them on to L3; E1 also forwards the pivot row. Buffered
+// (PipelineSettings::buffered), it runs an input process, the eliminator and an output process in
+// PAR, joined by one-row buffers. With recovery it checks each message's checksum and sends every
+// row on with its own.
+#pragma once
+
+#include <vector>
+
+#include "workloads/pipeline/levels/context.hpp"
+
+namespace workloads::levels {
+
+template <class T>
+class Level2 {
+ public:
+  Level2(const Context<T>& context, int e) : c_(context), e_(e) {}
+  // One system; false when the pipeline stops.
+  bool round(Process& p);
+  // Recovery: every system until L1's stop.
+  void checked(Process& p);
+
+ private:
+  using M = Messages<T>;
+  void eliminate_buffered(Process& p, const t800::Message& pivot_message,
+                          const std::vector<std::size_t>& rows);
+  network::Channel& in() const { return *c_.wiring.e_in[std::size_t(e_)]; }
+  network::Channel& out() const { return *c_.wiring.e_out[std::size_t(e_)]; }
+
+  Context<T> c_;
+  int e_;          // 0-based: E1 is 0
+  Shared buffer_;  // buffered: the one-row buffers between input, eliminator and output
+};
+
+extern template class Level2<float>;
+extern template class Level2<double>;
+
+}  // namespace workloads::levels

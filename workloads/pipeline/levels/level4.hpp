@@ -1,0 +1,24 @@
+// Level 4 (L4): takes the rows of U from L3, one per step, back-substitutes and has q̈ -- the end
+// of Tp; serving until finish, it sends q̈ to the client.
+#pragma once
+
+#include "workloads/pipeline/levels/context.hpp"
+
+namespace workloads::levels {
+
+template <class T>
+class Level4 {
+ public:
+  explicit Level4(const Context<T>& context) : c_(context) {}
+  // One system; false when the pipeline stops (finish, or a failure).
+  bool round(Process& p);
+
+ private:
+  using M = Messages<T>;
+  Context<T> c_;
+};
+
+extern template class Level4<float>;
+extern template class Level4<double>;
+
+}  // namespace workloads::levels
