@@ -11,4 +11,8 @@ Kernel::Kernel(std::shared_ptr<const t800::codegen::Recording> code,
   work_.code = std::move(code);
 }
 
+const std::string& Kernel::name() const {
+  return work_.code->name();
+}
+
 }  // namespace t800sim

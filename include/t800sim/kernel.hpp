@@ -53,7 +53,7 @@ class Kernel {
   // A kernel recorded and costed elsewhere (the simulator's own workloads record theirs piece by
   // piece).
   explicit Kernel(t800::ComputeWork work) : work_(std::move(work)) {}
-  const std::string& name() const { return work_.code->name(); }
+  const std::string& name() const;
   const t800::ComputeWork& work() const { return work_; }
 
  private:
