@@ -105,6 +105,15 @@ void deliver_to_mailbox(Process& router, Channel& c, t800::Message m) {
   c.mail.notify(sc_core::SC_ZERO_TIME);
 }
 
+FirstHop routed_first_hop(Process& p, const Channel& c, t800::Message m, double deadline_us) {
+  auto hop = p.machine().link_between(c.from, c.path.at(1));
+  FirstHop first{hop->first, hop->second, {}};
+  first.wrapped.bytes = m.bytes + kRouteHeaderBytes;
+  first.wrapped.label = m.label;
+  first.wrapped.payload = RoutedEnvelope{c.id, std::move(m), deadline_us};
+  return first;
+}
+
 void send(Process& p, Channel& c, t800::Message m) {
   switch (c.kind) {
     case Channel::Kind::internal:
@@ -112,12 +121,8 @@ void send(Process& p, Channel& c, t800::Message m) {
     case Channel::Kind::direct:
       return link_out(p, *c.link, c.writer_end, std::move(m));
     case Channel::Kind::routed: {
-      auto hop = p.machine().link_between(c.from, c.path.at(1));
-      t800::Message wrapped;
-      wrapped.bytes = m.bytes + kRouteHeaderBytes;
-      wrapped.label = m.label;
-      wrapped.payload = RoutedEnvelope{c.id, std::move(m)};
-      return link_out(p, *hop->first, hop->second, std::move(wrapped));
+      FirstHop hop = routed_first_hop(p, c, std::move(m));
+      return link_out(p, *hop.link, hop.end, std::move(hop.wrapped));
     }
   }
 }

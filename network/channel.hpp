@@ -56,7 +56,20 @@ constexpr std::int64_t kRouteHeaderBytes = 8;
 struct RoutedEnvelope {
   int channel = 0;
   t800::Message inner;
+  // Sent with OutputOrFail (network/reliable.hpp): every router on the way forwards it with the
+  // same deadline and drops it when the next hop has not taken it by then, so a halted processor
+  // past a router blocks neither the router nor the sender. -1: none (forwarded as out).
+  double deadline_us = -1;
 };
+
+// A message for a routed channel as it leaves its writer: wrapped for the routers, with the route
+// header's bytes, on the link to the first hop.
+struct FirstHop {
+  t800::Link* link = nullptr;
+  int end = 0;
+  t800::Message wrapped;
+};
+FirstHop routed_first_hop(Process& p, const Channel& c, t800::Message m, double deadline_us = -1);
 
 void send(Process& p, Channel& c, t800::Message m);
 t800::Message receive(Process& p, Channel& c);

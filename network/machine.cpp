@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "network/reliable.hpp"
 #include "network/wait_cycle.hpp"
 
 namespace network {
@@ -186,7 +187,11 @@ void Machine::start_router(int node, int from, t800::Link& link, int end) {
           }
           auto here = std::find(c.path.begin(), c.path.end(), node);
           auto next = link_between(node, *(here + 1));
-          link_out(self, *next->first, next->second, std::move(m));
+          const double deadline_us = envelope.deadline_us;
+          if (deadline_us < 0)
+            link_out(self, *next->first, next->second, std::move(m));
+          else if (!forward_or_fail(self, *next->first, next->second, std::move(m), deadline_us))
+            self.set_status("router dropped a message for " + c.name + " at its deadline");
         }
       });
   router.set_daemon();

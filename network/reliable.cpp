@@ -38,22 +38,38 @@ auto communicating(Process& p, Channel& c, bool output, Body body) {
   return result;
 }
 
+// The output on one link, given up at the deadline.
+bool transmit_or_fail(Process& p, t800::Link& link, int end, t800::Message m, double deadline_us) {
+  p.communicate(m.bytes, false);
+  p.deschedule();
+  const bool sent = link.transmit(end, std::move(m), at_us(deadline_us));
+  p.reschedule();
+  return sent;
+}
+
 }  // namespace
 
 bool out_or_fail(Process& p, Channel& c, t800::Message m, double deadline_us) {
-  if (c.kind != Channel::Kind::direct) {
+  if (c.kind == Channel::Kind::internal) {
     p.out(c, std::move(m));
     return true;
   }
   set_deadline(p);
   const bool done = communicating(p, c, true, [&] {
-    p.communicate(m.bytes, false);
-    p.deschedule();
-    const bool sent = c.link->transmit(c.writer_end, std::move(m), at_us(deadline_us));
-    p.reschedule();
-    return sent;
+    if (c.kind == Channel::Kind::direct)
+      return transmit_or_fail(p, *c.link, c.writer_end, std::move(m), deadline_us);
+    FirstHop hop = routed_first_hop(p, c, std::move(m), deadline_us);
+    return transmit_or_fail(p, *hop.link, hop.end, std::move(hop.wrapped), deadline_us);
   });
   if (!done) reset_channel(p);
+  return done;
+}
+
+bool forward_or_fail(Process& router, t800::Link& link, int end, t800::Message m,
+                     double deadline_us) {
+  set_deadline(router);
+  const bool done = transmit_or_fail(router, link, end, std::move(m), deadline_us);
+  if (!done) reset_channel(router);
   return done;
 }
 

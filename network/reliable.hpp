@@ -4,13 +4,20 @@
 // reading the timer for the deadline, and resetch when it gives up.
 //
 // On a direct (link) channel both can give up; a routed channel's input can (its message waits in
-// a mailbox), its output only if the first hop takes it; an internal channel cannot fail (both
-// ends are on one processor) and communicates as in / out.
+// a mailbox), its output if the first hop has not taken it by the deadline -- and every router on
+// the way forwards it with the same deadline (forward_or_fail), dropping it when its next hop has
+// not taken it, so the sender's wait for an answer is what notices a halted processor past a
+// router; an internal channel cannot fail (both ends are on one processor) and communicates as
+// in / out.
 #pragma once
 
 #include <optional>
 
 #include "t800/message.hpp"
+
+namespace t800 {
+class Link;
+}
 
 namespace network {
 
@@ -21,5 +28,8 @@ struct Channel;
 bool out_or_fail(Process& p, Channel& c, t800::Message m, double deadline_us);
 // nullopt: nothing arrived by `deadline_us`, the channel reset.
 std::optional<t800::Message> in_or_fail(Process& p, Channel& c, double deadline_us);
+// A router's OutputOrFail.t of a message it forwards on `link` from `end`; false: dropped.
+bool forward_or_fail(Process& router, t800::Link& link, int end, t800::Message m,
+                     double deadline_us);
 
 }  // namespace network

@@ -15,6 +15,11 @@ for scene in examples/commstime/commstime-1.toml examples/commstime/commstime-4.
   echo "== t800sim run $scene  (the installed t800sim)"
   "$prefix/bin/t800sim" run "$scene" | sed -n '/^workload$/,/placement:/p'
 done
+echo "== t800sim run examples/sumfarm/sumfarm.toml --json  (a farm on the SDK's skeleton)"
+"$prefix/bin/t800sim" run examples/sumfarm/sumfarm.toml --json >"$prefix/sumfarm.json"
+# every result against its closed form, x (i + 1)(i + 2) / 2
+grep -q '"wrong_results": 0' "$prefix/sumfarm.json" || { echo "sumfarm: wrong results"; cat "$prefix/sumfarm.json"; exit 1; }
+grep -o '"round_tp_us": \[[^]]*\]' "$prefix/sumfarm.json"
 echo "== examples/build/run_scene examples/run_scene/pipeline.toml"
 examples/build/run_scene examples/run_scene/pipeline.toml >"$prefix/report.json"
 # 1 + 2 + ... + 100, doubled by three stages: 5050 * 8.

@@ -28,6 +28,7 @@ int Network::host_processor() const {
 }
 
 ProcessDecl& Builder::process(const std::string& name, Process::Body body) {
+  if (!body) return add(name, 1, false, nullptr);  // spawned by its caller (sdk/realise.hpp)
   return add(name, 1, false, [body](Process& p, int) { body(p); });
 }
 

@@ -1,14 +1,20 @@
 #include "t800sim/process.hpp"
 
 #include <stdexcept>
+#include <typeindex>
 
 #include "network/channel.hpp"
 #include "network/machine.hpp"
 #include "network/process.hpp"
 #include "network/reliable.hpp"
+#include "t800/payload_bytes.hpp"
 #include "t800sim/kernel.hpp"
 
 namespace t800sim {
+
+void detail::register_value_bytes(const std::type_info& type, FlipValueByte flip) {
+  t800::register_payload_bytes(std::type_index(type), flip);
+}
 
 const std::string& Process::name() const {
   return impl_.name();
@@ -42,7 +48,7 @@ std::int64_t Process::cycles(const Kernel& kernel) const {
 
 void Process::Wire::send(std::int64_t bytes, std::any value) {
   if (failed_) return;
-  t800::Message m{bytes, std::move(value), channel_.name};
+  t800::Message m{bytes, std::move(value), label_.empty() ? channel_.name : label_};
   if (deadline_us_ < 0)
     process_.out(channel_, std::move(m));
   else
@@ -70,9 +76,10 @@ void Process::check_end(const detail::ChannelSlot* slot, bool writing) const {
                            impl_.machine().node_name(end));
 }
 
-Process::Wire Process::open(const detail::ChannelSlot* slot, bool writing, double deadline_us) {
+Process::Wire Process::open(const detail::ChannelSlot* slot, bool writing, double deadline_us,
+                            const std::string& label) {
   check_end(slot, writing);
-  return Wire(impl_, *slot->impl, deadline_us);
+  return Wire(impl_, *slot->impl, deadline_us, label);
 }
 
 void Process::par(const std::vector<Body>& branches) {

@@ -23,10 +23,7 @@ class ProgramWorkload : public workloads::Workload {
   std::vector<workloads::OutputTable> tables() const override { return tables_; }
 
  private:
-  void join_channels(network::Machine& machine);
   void check_tables() const;
-  std::string end_process(const std::string& process, const ChannelSlot& slot) const;
-  const PlacedProcess& placed(const std::string& process, const std::string& channel) const;
 
   std::string kind_;
   std::unique_ptr<Program> program_;

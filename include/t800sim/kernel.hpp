@@ -50,6 +50,9 @@ class Kernel {
  public:
   Kernel(std::shared_ptr<const t800::codegen::Recording> code, const dynamics::OpCounts& counts,
          long loop_iterations);
+  // A kernel recorded and costed elsewhere (the simulator's own workloads record theirs piece by
+  // piece).
+  explicit Kernel(t800::ComputeWork work) : work_(std::move(work)) {}
   const std::string& name() const;
   const t800::ComputeWork& work() const { return work_; }
 

@@ -50,9 +50,11 @@ class Process {
   std::int64_t cycles(const Kernel& kernel) const;
 
   // c ! v: returns when the value has been taken (a protocol's items one communication each).
+  // Traces and fault reports name the message by its channel, or by `label` when one is given
+  // (nothing but those reads it).
   template <class P>
-  void out(const Out<P>& c, const value_of<P>& v) {
-    auto wire = open(c.slot(), true);
+  void out(const Out<P>& c, const value_of<P>& v, const std::string& label = {}) {
+    auto wire = open(c.slot(), true, -1, label);
     protocol<P>::send(wire, v);
   }
   template <class P>
@@ -78,8 +80,9 @@ class Process {
   // routed channel the output fails only if the first hop does not take it. A protocol's items
   // each have the same deadline; after one fails the rest are not sent.
   template <class P>
-  bool out_or_fail(const Out<P>& c, const value_of<P>& v, double deadline_us) {
-    auto wire = open(c.slot(), true, deadline_us);
+  bool out_or_fail(const Out<P>& c, const value_of<P>& v, double deadline_us,
+                   const std::string& label = {}) {
+    auto wire = open(c.slot(), true, deadline_us, label);
     protocol<P>::send(wire, v);
     return !wire.failed();
   }
@@ -115,8 +118,9 @@ class Process {
   class Wire final : public detail::Wire {
    public:
     // deadline_us < 0: no deadline (out / in).
-    Wire(network::Process& process, network::Channel& channel, double deadline_us)
-        : process_(process), channel_(channel), deadline_us_(deadline_us) {}
+    Wire(network::Process& process, network::Channel& channel, double deadline_us,
+         const std::string& label)
+        : process_(process), channel_(channel), deadline_us_(deadline_us), label_(label) {}
     void send(std::int64_t bytes, std::any value) override;
     std::any receive() override;
     bool failed() const override { return failed_; }
@@ -125,9 +129,11 @@ class Process {
     network::Process& process_;
     network::Channel& channel_;
     double deadline_us_;
+    std::string label_;  // empty: the channel's name
     bool failed_ = false;
   };
-  Wire open(const detail::ChannelSlot* slot, bool writing, double deadline_us = -1);
+  Wire open(const detail::ChannelSlot* slot, bool writing, double deadline_us = -1,
+            const std::string& label = {});
 
   network::Process& impl_;
 };

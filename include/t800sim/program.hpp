@@ -116,6 +116,10 @@ class Builder {
   void code(const std::string& process, const Kernel& kernel);
 
   // ---- For the simulator ----
+  // The machine the program will run on, for the SDK's skeletons, which plan with its timing
+  // (t800sim/farm.hpp); nullptr until the simulator attaches it.
+  void attach(const network::Machine& machine) { machine_ = &machine; }
+  const network::Machine* machine() const { return machine_; }
   const std::deque<ProcessDecl>& declared_processes() const { return processes_; }
   const std::deque<detail::ChannelSlot>& declared_channels() const { return channels_; }
   std::deque<detail::ChannelSlot>& declared_channels() { return channels_; }
@@ -136,6 +140,7 @@ class Builder {
   std::deque<ProcessDecl> processes_;         // stable addresses: declarations are returned
   std::deque<detail::ChannelSlot> channels_;  // stable addresses: handles point into it
   std::vector<DeclaredCode> code_;
+  const network::Machine* machine_ = nullptr;
 };
 
 // A value of a report: a number, text, a list (ResultValue::list(), then push) or a record (set).

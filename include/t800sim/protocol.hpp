@@ -3,7 +3,10 @@
 // items of a sequential protocol are communicated one after the other, each its own input and
 // output; a counted array sends its count, then that many elements; a variant protocol sends its
 // tag, a BYTE, then the case's items. A single item (a primitive, or an array of them) is one
-// communication of all its bytes.
+// communication of all its bytes. A packed protocol is several items laid out in one buffer and
+// sent as one communication, as occam programs send a header word and a row together (a buffer
+// slice on a CHAN OF ANY, or an occam 2.1 RECORD); two kinds of message told apart by a flag in
+// that header are the program's values, not a tag byte.
 //
 // clang-format off
 //   occam                                 t800sim                                value in C++
@@ -12,6 +15,8 @@
 //   CHAN OF INT::[]REAL32 c:              Chan<Counted<INT, REAL32>>             std::vector<float>
 //   CHAN OF ANY c: c ! [b FROM 0 FOR n]   Chan<Block<BYTE>>                      std::vector<uint8_t>
 //   PROTOCOL P IS INT; REAL64:            Chan<Sequential<INT, REAL64>>          std::tuple<int32_t, double>
+//   CHAN OF ANY c: c ! [buf FROM 0 FOR n]
+//     (an INT header, then n-1 REAL32s)   Chan<Packed<INT, Block<REAL32>>>       std::tuple<int32_t, std::vector<float>>
 //   PROTOCOL Q CASE data; REAL32 | stop   Chan<Variant<Case<REAL32>, Case<>>>    std::variant<Case<REAL32>, Case<>>
 // clang-format on
 #pragma once
@@ -19,10 +24,12 @@
 #include <any>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <tuple>
 #include <type_traits>
+#include <typeinfo>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -49,6 +56,9 @@ template <class T>
 struct Block {};
 template <class... Items>
 struct Sequential {};  // Items; ...
+// Items laid out one after the other in one buffer: ONE communication of all their bytes.
+template <class... Items>
+struct Packed {};
 // protocol<P>: value_type (what a program sends and receives), bytes(v) (the bytes on the wire),
 // name() (as occam would write it), send/receive (the communications, in occam's order).
 template <class P, class Enable = void>
@@ -91,6 +101,20 @@ T take(Wire& w) {
 template <class T>
 constexpr bool is_primitive = std::is_arithmetic_v<T>;
 
+// Byte `byte` (0-based, little-endian as the T800 stores) of a plain value XORed with `mask`.
+template <class T>
+void flip_byte(T& value, std::int64_t byte, std::uint8_t mask) {
+  unsigned char raw[sizeof(T)];
+  std::memcpy(raw, &value, sizeof(T));
+  raw[byte] ^= mask;
+  std::memcpy(&value, raw, sizeof(T));
+}
+
+// A link fault that changes a byte in flight changes the value the receiver reads: the simulator
+// asks the value's type how (registered once per type; sdk/process.cpp).
+using FlipValueByte = bool (*)(std::any& value, std::int64_t byte, std::uint8_t mask);
+void register_value_bytes(const std::type_info& type, FlipValueByte flip);
+
 template <class T>
 const char* primitive_name() {
   if (std::is_same_v<T, bool>) return "BOOL";
@@ -113,9 +137,28 @@ struct protocol<T, std::enable_if_t<detail::is_primitive<T>>> {
     return std::is_same_v<T, bool> ? 1 : std::int64_t(sizeof(T));
   }
   static std::string name() { return detail::primitive_name<T>(); }
+  // A byte of the value on the wire changed (a link fault); false for a BOOL (not modelled).
+  static bool flip(value_type& v, std::int64_t byte, std::uint8_t mask) {
+    if (std::is_same_v<T, bool> || byte < 0 || byte >= std::int64_t(sizeof(T))) return false;
+    detail::flip_byte(v, byte, mask);
+    return true;
+  }
   static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 };
+
+namespace detail {
+// A byte of an array or block: it lands in the element at that offset.
+template <class T, class Elements>
+bool flip_element(Elements& v, std::int64_t byte, std::uint8_t mask) {
+  for (auto& x : v) {
+    const std::int64_t size = protocol<T>::bytes(x);
+    if (byte < size) return protocol<T>::flip(x, byte, mask);
+    byte -= size;
+  }
+  return false;
+}
+}  // namespace detail
 
 template <class T, std::size_t N>
 struct protocol<Array<T, N>> {
@@ -128,6 +171,9 @@ struct protocol<Array<T, N>> {
     return n;
   }
   static std::string name() { return "[" + std::to_string(N) + "]" + protocol<T>::name(); }
+  static bool flip(value_type& v, std::int64_t byte, std::uint8_t mask) {
+    return detail::flip_element<T>(v, byte, mask);
+  }
   static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 };
@@ -143,6 +189,9 @@ struct protocol<Block<T>> {
     return n;
   }
   static std::string name() { return "ANY ([]" + protocol<T>::name() + ")"; }
+  static bool flip(value_type& v, std::int64_t byte, std::uint8_t mask) {
+    return detail::flip_element<T>(v, byte, mask);
+  }
   static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 };
@@ -192,6 +241,53 @@ struct protocol<Sequential<Items...>> {
   }
   // Braced initialisation: the items are received in order.
   static value_type receive(detail::Wire& w) { return value_type{protocol<Items>::receive(w)...}; }
+};
+
+// One communication of all the items' bytes, in order; a link fault's changed byte lands in the
+// item (and element) at that offset.
+template <class... Items>
+struct protocol<Packed<Items...>> {
+  static_assert(
+      (protocol<Items>::single && ...),
+      "a packed protocol's items are each one communication (primitives, arrays, blocks)");
+  using value_type = std::tuple<typename protocol<Items>::value_type...>;
+  static constexpr bool single = true;
+  static std::int64_t bytes(const value_type& v) {
+    return protocol<Sequential<Items...>>::bytes(v);
+  }
+  static std::string name() { return "ANY (" + protocol<Sequential<Items...>>::name() + ")"; }
+  static bool flip(value_type& v, std::int64_t byte, std::uint8_t mask) {
+    bool changed = false, done = false;
+    std::apply(
+        [&](auto&... x) {
+          auto item = [&](auto& value, auto* item_protocol) {
+            using Item = std::remove_pointer_t<decltype(item_protocol)>;
+            if (done) return;
+            const std::int64_t size = Item::bytes(value);
+            if (byte < size) {
+              changed = Item::flip(value, byte, mask);
+              done = true;
+            }
+            byte -= size;
+          };
+          (item(x, static_cast<protocol<Items>*>(nullptr)), ...);
+        },
+        v);
+    return changed;
+  }
+  static void send(detail::Wire& w, const value_type& v) {
+    static const bool registered =
+        (detail::register_value_bytes(typeid(value_type), &flip_any), true);
+    (void)registered;
+    w.send(bytes(v), v);
+  }
+  static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
+
+ private:
+  static bool flip_any(std::any& value, std::int64_t byte, std::uint8_t mask) {
+    value_type* v = std::any_cast<value_type>(&value);
+    return v && byte >= 0 && flip(*v, byte, mask);
+  }
 };
 
 template <class... Items>

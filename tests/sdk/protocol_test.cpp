@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "t800/payload_bytes.hpp"
 #include "t800sim/protocol.hpp"
 
 namespace {
@@ -74,6 +75,46 @@ TEST(Protocol, AVariantSendsItsTagThenItsCase) {
   EXPECT_EQ(round_trip<P>(stop).first, std::vector<std::int64_t>{1});
   EXPECT_EQ(round_trip<P>(stop).second.index(), 1u);
   EXPECT_EQ(wire_bytes<P>(data), 9);
+}
+
+// A header word and a row in one buffer (occam's `c ! [buf FROM 0 FOR n]` on a CHAN OF ANY): one
+// communication of 4 + 4 * 3 = 16 bytes (REAL32) or 4 + 8 * 2 = 20 (REAL64); a bare header, 4.
+TEST(Protocol, APackedProtocolIsOneCommunicationOfAllItsBytes) {
+  using P = Packed<INT, Block<REAL32>>;
+  const value_of<P> row{7, {1.5f, -2.0f, 0.25f}};
+  EXPECT_EQ(round_trip<P>(row), std::make_pair(std::vector<std::int64_t>{16}, row));
+  EXPECT_EQ(wire_bytes<P>({-1, {}}), 4);
+  EXPECT_EQ((wire_bytes<Packed<INT, Block<REAL64>>>({0, {1.0, 2.0}})), 20);
+  // Header, row and a checksum word: 4 + 8 + 4.
+  EXPECT_EQ((wire_bytes<Packed<INT, Block<REAL32>, INT>>({1, {1.0f, 2.0f}, 99})), 16);
+  EXPECT_EQ(protocol<P>::name(), "ANY (INT; ANY ([]REAL32))");
+}
+
+// A link fault's changed byte lands where the value's bytes lie on the wire: bytes 0-3 are the
+// header word (little-endian), then each REAL32 four bytes, then the trailing word.
+TEST(Protocol, AChangedByteOfAPackedValueLandsInTheItemAtItsOffset) {
+  using P = Packed<INT, Block<REAL32>, INT>;
+  value_of<P> v{0x01020304, {1.0f, 2.0f}, 5};
+  ASSERT_TRUE(protocol<P>::flip(v, 1, 0xff));  // the header's second-lowest byte
+  EXPECT_EQ(std::get<0>(v), 0x0102fc04);
+  // 2.0f is 0x40000000; byte 3 of it (the 4 + 4 + 3 = 11th byte) XOR 0x80 flips the sign.
+  ASSERT_TRUE(protocol<P>::flip(v, 11, 0x80));
+  EXPECT_EQ(std::get<1>(v), (std::vector<float>{1.0f, -2.0f}));
+  ASSERT_TRUE(protocol<P>::flip(v, 12, 0x01));  // the trailing word's lowest byte: 5 ^ 1
+  EXPECT_EQ(std::get<2>(v), 4);
+  EXPECT_FALSE(protocol<P>::flip(v, 16, 0x01));  // past the end
+}
+
+// Sending a packed value tells the simulator's link faults how its bytes lie
+// (t800/payload_bytes.hpp): a corrupted byte of the message lands in the value the receiver reads.
+TEST(Protocol, ALinkFaultChangesTheValueOfAPackedMessageItCarries) {
+  using P = Packed<INT, Block<REAL64>>;
+  RecordingWire w;
+  protocol<P>::send(w, {3, {1.0}});
+  std::any carried = w.values.at(0);
+  // 1.0 is 0x3ff0000000000000; its last byte (message byte 4 + 7) XOR 0x80: -1.0.
+  ASSERT_TRUE(t800::flip_payload_byte(carried, 11, 0x80));
+  EXPECT_EQ(std::any_cast<value_of<P>>(carried), (value_of<P>{3, {-1.0}}));
 }
 
 // A value of another protocol arriving is a program error, not a silent reinterpretation.

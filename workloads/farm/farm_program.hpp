@@ -1,24 +1,24 @@
-// The paper's processor farm as a program that serves evaluations: a master process calls
-// evaluate() for each state (once for Table 4, four times per RK4 step in a trajectory); the
-// workers loop over rounds until finish(). Used by the dynamics-farm and trajectory workloads.
+// The paper's processor farm as a program that serves evaluations, built on the SDK's farm
+// skeleton (t800sim/farm.hpp): a master process calls evaluate() for each state (once for Table 4,
+// four times per RK4 step in a trajectory); the workers loop over rounds until finish(). Used by
+// the dynamics-farm and trajectory workloads.
 //
-// One round: the master computes sin/cos of the joint angles once and sends them to every worker;
-// workers evaluate their subtasks -- each costed by the operations of the code that computes it --
-// and return the values; the master forms c and assembles D, C, h. Workers that are not the
-// master's neighbours are reached through software routers on the processors between
-// (network/channel.hpp).
+// One round: the master computes sin/cos of the joint angles once and sends them to every worker
+// (the skeleton's shared input, one message of REALs); workers evaluate their subtasks -- each
+// costed by the code that computes it -- and return the values; the master forms c and assembles
+// D, C, h. Workers that are not the master's neighbours are reached through software routers on
+// the processors between (network/channel.hpp).
 #pragma once
 
-#include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "network/machine.hpp"
+#include "t800sim/farm.hpp"
 #include "workloads/dynamics/assembly.hpp"
 #include "workloads/dynamics/subtask_set.hpp"
-#include "workloads/dynamics/worker_input.hpp"
 #include "workloads/farm/farm_tasks.hpp"
-#include "workloads/farm/schedule.hpp"
 
 namespace workloads {
 
@@ -32,22 +32,13 @@ struct FarmSettings {
   // once when the farm is built (farm_work), never from evaluating. The values stay zero.
   bool skip_numerics = false;
   // Recovery from a halted or unreachable worker (static and explicit schedules): the master's
-  // output to each worker and its wait for the results give up at a deadline (OutputOrFail /
-  // InputOrFail, network/reliable.hpp) and the subtasks of a worker that failed are handed to the
-  // others. Each worker then holds every subtask's code, as on demand.
+  // output to each worker and its wait for the results give up at a deadline and the subtasks of a
+  // worker that failed are handed to the others (t800sim/farm.hpp). Each worker then holds every
+  // subtask's code, as on demand.
   bool recovery = false;
   // How long the master waits for a worker beyond its predicted time (0: that predicted time again,
   // plus 50 us).
   double timeout_us = 0;
-};
-
-// What the master sends a worker each round: the state (nullopt: finish) and the subtasks to
-// evaluate, in the order the results come back. The list is part of the compiled program (the
-// allocation), so it costs no bytes, except in a recovery's order, which sends it.
-template <class S>
-struct WorkerOrder {
-  std::optional<dynamics::WorkerInput<S>> input;
-  std::vector<int> tasks;
 };
 
 // The timing of one round, as the master saw it.
@@ -79,50 +70,23 @@ class FarmProgram {
   const FarmWork& work() const { return work_; }
   const std::vector<int>& workers() const { return workers_; }
   // The subtasks each worker ran in the last round (indices into work().tasks).
-  const std::vector<std::vector<int>>& done_by() const { return done_by_; }
-  // Workers the master gave up on (recovery), in the order it did.
-  const std::vector<int>& lost_workers() const { return lost_; }
-  // The master's last round's recovery: when it noticed a failed worker, when the reassigned
-  // subtasks' results were all in (both -1 without one).
-  double recovery_started_us() const { return recovery_started_us_; }
-  double recovery_done_us() const { return recovery_done_us_; }
+  const std::vector<std::vector<int>>& done_by() const { return farm_->done_by(); }
   std::vector<dynamics::Subtask> subtasks() const;
 
  private:
-  static constexpr std::int64_t kReal = sizeof(S);
-  Allocation allocate(const network::Machine& m) const;
-  bool has_work(std::size_t w) const;
-  std::vector<double> workers_busy_now(network::Machine& m) const;
-  void collect(network::Process& p, std::size_t w, dynamics::DynamicsData<S>& data);
-  // Recovery: the order out and the results back, each with a deadline; false when either failed.
-  bool exchange(network::Process& p, std::size_t w, const WorkerOrder<S>& order, std::int64_t bytes,
-                dynamics::DynamicsData<S>& data);
-  void reassign(network::Process& p, const std::optional<dynamics::WorkerInput<S>>& input,
-                std::int64_t input_bytes, dynamics::DynamicsData<S>& data);
-  double predicted_us(const network::Machine& m, std::size_t w,
-                      const std::vector<int>& tasks) const;
-  bool alive(std::size_t w) const;
-  void hand_out(network::Process& p, std::size_t w, dynamics::DynamicsData<S>& data);
-  void worker(network::Process& p, std::size_t w);
-  void static_round(network::Process& p, std::size_t w, const std::vector<int>& tasks,
-                    const dynamics::WorkerInput<S>& input);
-  void on_demand_round(network::Process& p, std::size_t w, const dynamics::WorkerInput<S>& input);
-  S run_task(network::Process& p, int t, const dynamics::WorkerInput<S>& input);
-  const std::vector<int>& dispatch_order();
+  // The shared input: the worker input's REALs in message order (dynamics::message_fields), one
+  // message; each subtask's result: one REAL.
+  using Skeleton = t800sim::Farm<t800sim::Block<S>, S>;
+  t800sim::FarmOptions options() const;
+  S run_subtask(int task, const std::vector<S>& shared) const;
 
   const dynamics::RobotModel& model_;
   FarmSettings settings_;
   int master_;
   std::vector<int> workers_;
   FarmWork work_;
-  Allocation allocation_;
-  std::vector<network::Channel*> to_, from_, queue_;
-  std::vector<std::vector<int>> done_by_;
-  std::vector<int> order_;
-  int next_ = 0;
-  std::vector<int> lost_;            // node indices
-  std::vector<std::size_t> failed_;  // this round's
-  double recovery_started_us_ = -1, recovery_done_us_ = -1;
+  std::unique_ptr<t800sim::Builder> builder_;  // owns the channels the skeleton's handles name
+  std::unique_ptr<Skeleton> farm_;
 };
 
 extern template class FarmProgram<float>;

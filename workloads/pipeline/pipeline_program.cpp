@@ -3,6 +3,7 @@
 #include <memory>
 #include <numeric>
 #include <stdexcept>
+#include <tuple>
 
 #include "t800/link_timing.hpp"
 #include "workloads/pipeline/levels/level1.hpp"
@@ -64,7 +65,8 @@ class PipelineProgram<T>::Levels {
     if (settings.recovery && serve != Serve::once)
       throw std::invalid_argument("elimination pipeline: recovery serves one system only");
     M::register_faults();
-    wiring_ = levels::Wiring::plan(machine, shape, nodes, client, serve);
+    wiring_ = levels::Wiring::plan(machine, shape, nodes, client, serve, spawn_fan_out<T>,
+                                   spawn_fan_in<T>);
     const levels::Context<T> context{settings, shape, nodes, wiring_, report_, pieces_, serve};
     // Recovery: a message that has started arrives within twice the longest message's time on a
     // link, and 10 us.
@@ -85,14 +87,16 @@ class PipelineProgram<T>::Levels {
       machine.spawn(nodes.e[std::size_t(e)], "level2", low, [this, e](Process& p) {
         levels::Level2<T>& level = *level2_[std::size_t(e)];
         if (settings.recovery) return level.checked(p);
-        levels::loop(serve_, p, [&level](Process& q) { return level.round(q); });
+        t800sim::Process level2(p);
+        levels::loop(serve_, level2, [&level](t800sim::Process& q) { return level.round(q); });
       });
     machine.spawn(nodes.l3, "level3", low, [this](Process& p) {
       if (settings.recovery) return void(level3_->checked(p));
       levels::loop(serve_, p, [this](Process& q) { return level3_->round(q); });
     });
     machine.spawn(nodes.l4, "level4", low, [this](Process& p) {
-      levels::loop(serve_, p, [this](Process& q) { return level4_->round(q); });
+      t800sim::Process level4(p);
+      levels::loop(serve_, level4, [this](t800sim::Process& q) { return level4_->round(q); });
     });
     declare_code(machine);
   }
@@ -169,9 +173,10 @@ class PipelineProgram<T>::Levels {
   void receive(Process& p) {
     if (!wiring_.reply)
       throw std::logic_error("elimination pipeline: solve() needs Serve::until_finish");
-    const t800::Message m = p.in(*wiring_.reply);
+    const auto answer =
+        t800sim::Process(p).in(t800sim::In<typename M::Packet>(wiring_.typed(wiring_.reply)));
     report_.outcome.returned_us = p.now_us();
-    if (m.label == kFailLabel) stopped_ = true;
+    if (std::get<0>(answer) & levels::header::kStop) stopped_ = true;
   }
 
   void finish(Process& p) {

@@ -4,8 +4,8 @@
 // process and one output process per link, joined by internal channels, so that X takes the next
 // row from L1 while it is still sending the previous one on. X receives each step's pivot row once
 // and copies it to every processor it serves. They know the pipeline's schedule (schedule.hpp),
-// so no routing header is needed; they stop on a failure message (which also ends a pipeline that
-// serves until finish, pipeline_program.hpp).
+// so no routing header is needed; they stop on a stop message (its header word's status flag says
+// failure or finish; which also ends a pipeline that serves until finish, pipeline_program.hpp).
 #pragma once
 
 #include <string>
@@ -16,7 +16,7 @@
 
 namespace workloads {
 
-// The label of a failure message (a bare header word): relays pass it on and stop.
+// The trace label of a stop message (a bare header word); control flow reads the value, not this.
 constexpr const char* kFailLabel = "fail";
 
 struct Relay {
@@ -28,8 +28,13 @@ struct Relay {
   std::vector<network::Channel*> inputs, outputs;
 };
 
+// Processes of the SDK (t800sim::Process) forwarding packets of REAL T rows (levels/messages.hpp)
+// over typed channels; a stop (the header word's flag) they pass on and end.
+template <class T>
 void spawn_fan_out(network::Machine& machine, const PipelineShape& shape, const Relay& relay);
+template <class T>
 void spawn_fan_in(network::Machine& machine, const PipelineShape& shape, const Relay& relay);
+using SpawnRelay = void (*)(network::Machine&, const PipelineShape&, const Relay&);
 
 // The served processors of a relay that take part in step k, and the rows (in order) it carries.
 std::vector<int> relay_participants(const PipelineShape& shape, const Relay& relay, int k);

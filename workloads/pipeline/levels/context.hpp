@@ -5,12 +5,15 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include <systemc>
 
 #include "network/machine.hpp"
+#include "t800sim/kernel.hpp"
+#include "t800sim/process.hpp"
 #include "workloads/pipeline/checksum.hpp"
 #include "workloads/pipeline/levels/messages.hpp"
 #include "workloads/pipeline/levels/report.hpp"
@@ -42,6 +45,25 @@ struct Context {
     p.compute(cost, label);
     return std::move(result);
   }
+  template <class Kernel, class... Inputs>
+  auto run_piece(t800sim::Process& p, const char* label, Kernel kernel,
+                 Named<Inputs>... inputs) const {
+    auto [result, cost] = pieces.run(label, kernel, inputs...);
+    p.compute(t800sim::Kernel(std::move(cost)), label);
+    return std::move(result);
+  }
+
+  // A packet over a channel of the wiring, through the SDK's typed channel (a t800sim::Process
+  // view of p): the bytes from the protocol, `label` naming it in traces and fault reports.
+  using Packet = typename Messages<T>::Packet;
+  using PacketValue = typename Messages<T>::PacketValue;
+  void send(Process& p, const network::Channel* c, const PacketValue& v,
+            const std::string& label) const {
+    t800sim::Process(p).out(t800sim::Out<Packet>(wiring.typed(c)), v, label);
+  }
+  PacketValue receive(Process& p, const network::Channel* c) const {
+    return t800sim::Process(p).in(t800sim::In<Packet>(wiring.typed(c)));
+  }
 
   // The checksum loop over a message of `count` REALs and its header, on p's processor.
   void charge_checksum(Process& p, std::size_t count) const {
@@ -51,14 +73,15 @@ struct Context {
 };
 
 // occam PAR; a single branch runs in place.
-inline void par(Process& p, const std::vector<Process::Body>& branches) {
+template <class AnyProcess>
+void par(AnyProcess& p, const std::vector<typename AnyProcess::Body>& branches) {
   if (branches.size() == 1) return branches.front()(p);
   p.par(branches);
 }
 
 // Once: one round. Until finish: rounds until the level sees the finish (or a failure) and stops.
-template <class Round>
-void loop(Serve serve, Process& p, Round round) {
+template <class AnyProcess, class Round>
+void loop(Serve serve, AnyProcess& p, Round round) {
   for (int r = 0; serve == Serve::until_finish || r < 1; ++r)
     if (!round(p)) return;
 }
@@ -75,6 +98,10 @@ struct Shared {
     p.deschedule();
     while (!ready()) sc_core::wait(changed);
     p.reschedule();
+  }
+  template <class Ready>
+  void wait_until(t800sim::Process& p, Ready ready) {
+    wait_until(p.impl(), ready);
   }
   void notify() { changed.notify(sc_core::SC_ZERO_TIME); }
 };

@@ -137,7 +137,7 @@ void Level1<T>::receive_streamed(Process& p) {
     if (handed_ < s) return;
     Rows& m = matrices_[std::size_t(s)];
     for (int r = 0; r < c_.n() - s; ++r) {
-      auto row = std::any_cast<typename M::ReturnedRow>(p.in(*c_.wiring.back).payload);
+      auto row = M::returned_row_of(c_.receive(p, c_.wiring.back));
       if (row.index >= m.size())
         p.stop("row number " + std::to_string(row.index) + " out of range");
       m[row.index] = std::move(row.values);
@@ -159,7 +159,7 @@ template <class T>
 bool Level1<T>::receive_reduced(Process& p, std::size_t rows, Rows& m) {
   Rows reduced;
   for (std::size_t i = 0; i < rows; ++i) {
-    auto row = std::any_cast<typename M::ReturnedRow>(p.in(*c_.wiring.back).payload);
+    auto row = M::returned_row_of(c_.receive(p, c_.wiring.back));
     if (!row.ok) return false;  // strict: rows come in order
     reduced.push_back(std::move(row.values));
   }
@@ -177,8 +177,8 @@ bool Level1<T>::send_stop(Process& p, int k, bool finish) {
   const bool next_round_waits = c_.serve == Serve::until_finish && k > 0;
   for (const Port& port : c_.wiring.out_ports)
     if (!Wiring::takers(c_.shape, port, k).empty() || next_round_waits)
-      branches.push_back([&port, finish](Process& q) {
-        q.out(*port.channel, message(M::Pivot::stop(finish), kFailLabel));
+      branches.push_back([this, k, &port, finish](Process& q) {
+        c_.send(q, port.channel, M::to_packet(k, M::Pivot::stop(finish)), kFailLabel);
       });
   par(p, branches);
   return false;
@@ -191,10 +191,10 @@ void Level1<T>::hand_out(Process& p, int k, const typename M::Pivot& pivot, cons
   for (const Port& port : c_.wiring.out_ports) {
     if (Wiring::takers(c_.shape, port, k).empty()) continue;
     branches.push_back([this, k, &port, &pivot, &m](Process& q) {
-      q.out(*port.channel, message(pivot, "pivot row"));
+      c_.send(q, port.channel, M::to_packet(k, pivot), "pivot row");
       for (std::size_t i : relay_rows(c_.shape, port.served, k)) {
         await_row(q, k, i);
-        q.out(*port.channel, message(typename M::RowMessage{i, m[i]}, "row"));
+        c_.send(q, port.channel, M::to_packet(typename M::RowMessage{i, m[i]}), "row");
       }
     });
   }
@@ -267,13 +267,13 @@ bool Level1<T>::next_matrix_checked(Process& p, int k) {
       hand_out_checked(p, k - 1, request->rows, request->avoid);
       continue;
     }
-    auto first = std::any_cast<ReturnedRow>(std::move(m.payload));
+    ReturnedRow first = M::returned_row_of(std::any_cast<typename M::PacketValue>(m.payload));
     if (!first.ok) return false;
     if (k == c_.n()) return true;  // L3's word that the last step is complete
     Rows& reduced = matrices_[std::size_t(k)];
     reduced = {std::move(first.values)};
     for (int i = 1; i < c_.n() - k; ++i) {
-      auto row = std::any_cast<ReturnedRow>(p.in(*c_.wiring.back).payload);
+      ReturnedRow row = M::returned_row_of(c_.receive(p, c_.wiring.back));
       if (!row.ok) return false;
       reduced.push_back(std::move(row.values));
     }

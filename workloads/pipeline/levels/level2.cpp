@@ -3,43 +3,45 @@
 #include <any>
 
 #include "network/reliable.hpp"
+#include "workloads/pipeline/relay.hpp"
 
 namespace workloads::levels {
 
 template <class T>
-bool Level2<T>::round(Process& p) {
-  using Pivot = typename M::Pivot;
+bool Level2<T>::round(t800sim::Process& p) {
   using RowMessage = typename M::RowMessage;
   const int e = e_;
   for (int k = 0; k < c_.n(); ++k) {
     if (!c_.shape.participates(k, e)) continue;
-    t800::Message pivot_message = p.in(in());
-    const auto& pivot = std::any_cast<const Pivot&>(pivot_message.payload);
+    const PacketValue pivot_packet = p.in(input());
+    const typename M::Pivot pivot = M::pivot_of(pivot_packet);
     const std::vector<std::size_t> rows = c_.shape.rows_for(k, e);
     if (!pivot.ok) {
       // E1 tells L3; one behind the fan-in tells the fan-in, which waits for its rows.
-      if (e == 0 || c_.wiring.e_behind_fan_in[std::size_t(e)]) p.out(out(), pivot_message);
+      if (e == 0 || c_.wiring.e_behind_fan_in[std::size_t(e)])
+        p.out(output(), pivot_packet, kFailLabel);
       return false;
     }
     c_.report.level2(p.now_us(), true);
     if (c_.settings.buffered) {
-      eliminate_buffered(p, pivot_message, rows);
+      eliminate_buffered(p, pivot_packet, rows);
       continue;
     }
-    std::vector<t800::Message> first(1);
+    PacketValue first;
     if (e == 0) {
       // E1 forwards the pivot row to L3 while it takes its first row.
-      std::vector<Process::Body> branches{[&](Process& q) { q.out(out(), pivot_message); }};
-      if (!rows.empty()) branches.push_back([&](Process& q) { first[0] = q.in(in()); });
+      std::vector<t800sim::Process::Body> branches{
+          [&](t800sim::Process& q) { q.out(output(), pivot_packet, "pivot row"); }};
+      if (!rows.empty()) branches.push_back([&](t800sim::Process& q) { first = q.in(input()); });
       par(p, branches);
     }
     for (std::size_t r = 0; r < rows.size(); ++r) {
-      t800::Message received = (r == 0 && e == 0) ? std::move(first[0]) : p.in(in());
-      const auto& row = std::any_cast<const RowMessage&>(received.payload);
+      const RowMessage row =
+          M::row_message_of((r == 0 && e == 0) ? std::move(first) : p.in(input()));
       elimination::Row<typename M::C> done = c_.run_piece(
           p, "eliminate", [](auto& x, auto& j1) { return elimination::eliminate(x, j1); },
           named("row", row.values), named("pivot", pivot.row));
-      p.out(out(), message(RowMessage{row.index, std::move(done)}, "row"));
+      p.out(output(), M::to_packet(RowMessage{row.index, std::move(done)}), "row");
       c_.report.level2(p.now_us(), false);
     }
   }
@@ -51,31 +53,31 @@ bool Level2<T>::round(Process& p) {
 // eliminator hands row r on once the output process has taken row r - 1; the buffers are the
 // processes' own variables, so handing a row on costs nothing here (as Shared).
 template <class T>
-void Level2<T>::eliminate_buffered(Process& p, const t800::Message& pivot_message,
+void Level2<T>::eliminate_buffered(t800sim::Process& p, const PacketValue& pivot_packet,
                                    const std::vector<std::size_t>& rows) {
   using RowMessage = typename M::RowMessage;
-  const auto& pivot = std::any_cast<const typename M::Pivot&>(pivot_message.payload);
+  const typename M::Pivot pivot = M::pivot_of(pivot_packet);
   Shared& buffer = buffer_;
   const std::size_t count = rows.size();
-  std::vector<t800::Message> taken(count);
+  std::vector<PacketValue> taken(count);
   std::vector<RowMessage> done(count);
   std::size_t received = 0, started = 0, finished = 0, sent = 0;
-  std::vector<Process::Body> branches;
+  std::vector<t800sim::Process::Body> branches;
   if (count > 0) {
-    branches.push_back([&](Process& q) {  // input
+    branches.push_back([&](t800sim::Process& q) {  // input
       for (std::size_t r = 0; r < count; ++r) {
         buffer.wait_until(q, [&] { return started >= r; });
-        taken[r] = q.in(in());
+        taken[r] = q.in(input());
         ++received;
         buffer.notify();
       }
     });
-    branches.push_back([&](Process& q) {  // eliminator
+    branches.push_back([&](t800sim::Process& q) {  // eliminator
       for (std::size_t r = 0; r < count; ++r) {
         buffer.wait_until(q, [&] { return received > r; });
         ++started;
         buffer.notify();
-        const auto& row = std::any_cast<const RowMessage&>(taken[r].payload);
+        const RowMessage row = M::row_message_of(taken[r]);
         elimination::Row<typename M::C> values = c_.run_piece(
             q, "eliminate", [](auto& x, auto& j1) { return elimination::eliminate(x, j1); },
             named("row", row.values), named("pivot", pivot.row));
@@ -86,13 +88,13 @@ void Level2<T>::eliminate_buffered(Process& p, const t800::Message& pivot_messag
       }
     });
   }
-  branches.push_back([&](Process& q) {  // output; E1 forwards the pivot row first
-    if (e_ == 0) q.out(out(), pivot_message);
+  branches.push_back([&](t800sim::Process& q) {  // output; E1 forwards the pivot row first
+    if (e_ == 0) q.out(output(), pivot_packet, "pivot row");
     for (std::size_t r = 0; r < count; ++r) {
       buffer.wait_until(q, [&] { return finished > r; });
       ++sent;
       buffer.notify();
-      q.out(out(), message(std::move(done[r]), "row"));
+      q.out(output(), M::to_packet(done[r]), "row");
       c_.report.level2(q.now_us(), false);
     }
   });

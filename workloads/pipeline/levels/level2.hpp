@@ -2,7 +2,9 @@
 // leading element and sends them on to L3; E1 also forwards the pivot row. Buffered
 // (PipelineSettings::buffered), it runs an input process, the eliminator and an output process in
 // PAR, joined by one-row buffers. With recovery it checks each message's checksum and sends every
-// row on with its own.
+// row on with its own. Strict, overlapped and buffered it is a process of the SDK
+// (t800sim::Process, typed In/Out of Messages::Packet); recovery's loop still runs on the
+// simulator's process.
 #pragma once
 
 #include <vector>
@@ -15,15 +17,22 @@ template <class T>
 class Level2 {
  public:
   Level2(const Context<T>& context, int e) : c_(context), e_(e) {}
-  // One system; false when the pipeline stops.
-  bool round(Process& p);
+  // One system; false when the pipeline stops. A process of the SDK: typed channels, packets.
+  bool round(t800sim::Process& p);
   // Recovery: every system until L1's stop.
   void checked(Process& p);
 
  private:
   using M = Messages<T>;
-  void eliminate_buffered(Process& p, const t800::Message& pivot_message,
+  using PacketValue = typename M::PacketValue;
+  void eliminate_buffered(t800sim::Process& p, const PacketValue& pivot_packet,
                           const std::vector<std::size_t>& rows);
+  t800sim::In<typename M::Packet> input() const {
+    return t800sim::In<typename M::Packet>(c_.wiring.typed(&in()));
+  }
+  t800sim::Out<typename M::Packet> output() const {
+    return t800sim::Out<typename M::Packet>(c_.wiring.typed(&out()));
+  }
   network::Channel& in() const { return *c_.wiring.e_in[std::size_t(e_)]; }
   network::Channel& out() const { return *c_.wiring.e_out[std::size_t(e_)]; }
 

@@ -20,9 +20,9 @@ bool Level3<T>::round(Process& p) {
   C bound = C(0);
   bool unstable = false;
   for (int k = 0; k < c_.n(); ++k) {
-    auto pivot = std::any_cast<Pivot>(p.in(*w.e_out[0]).payload);
+    Pivot pivot = M::pivot_of(c_.receive(p, w.e_out[0]));
     if (!pivot.ok) {
-      p.out(*w.to_l4, {kHeaderBytes, pivot, kFailLabel});
+      to_l4(p, k, pivot, kFailLabel);
       return false;
     }
     if (k == 0 && c_.settings.rule.growth_check())
@@ -63,13 +63,13 @@ bool Level3<T>::return_reduced(Process& p, int k, Rows& rows, C bound, bool& uns
     c_.report.fail(k, Status::non_finite,
                    "level 3: a non-finite value in row " + std::to_string(check.row + 1) +
                        " of step " + std::to_string(k));
-    p.out(*c_.wiring.back, message(typename M::ReturnedRow{false, {}}, kFailLabel));
+    c_.send(p, c_.wiring.back, M::to_packet(typename M::ReturnedRow{false, {}}), kFailLabel);
     return false;
   }
   if (check.status == Status::unstable) unstable_at(k, unstable);
   for (std::size_t i = 0; i < rows.size(); ++i)
-    p.out(*c_.wiring.back,
-          message(typename M::ReturnedRow{true, std::move(rows[i]), i}, "reduced row"));
+    c_.send(p, c_.wiring.back, M::to_packet(typename M::ReturnedRow{true, std::move(rows[i]), i}),
+            "reduced row");
   return true;
 }
 
@@ -79,15 +79,14 @@ template <class T>
 void Level3<T>::collect(Process& p, int k, Pivot& pivot, bool unstable, Rows& rows) {
   using RowMessage = typename M::RowMessage;
   pivot.unstable = unstable;
-  std::vector<Process::Body> branches{
-      [&](Process& q) { q.out(*c_.wiring.to_l4, message(pivot, "U row")); }};
+  std::vector<Process::Body> branches{[&](Process& q) { to_l4(q, k, pivot, "U row"); }};
   std::vector<int> arrived(rows.size(), 0);
   for (const Port& port : c_.wiring.in_ports) {
     const std::vector<std::size_t> expected = relay_rows(c_.shape, port.served, k);
     if (expected.empty()) continue;
-    branches.push_back([&port, expected, &rows, &arrived](Process& q) {
+    branches.push_back([this, &port, expected, &rows, &arrived](Process& q) {
       for (std::size_t count = expected.size(); count > 0; --count) {
-        auto row = std::any_cast<RowMessage>(q.in(*port.channel).payload);
+        RowMessage row = M::row_message_of(c_.receive(q, port.channel));
         if (row.index < 1 || row.index > rows.size())
           q.stop("row number " + std::to_string(row.index) + " out of range");
         rows[row.index - 1] = std::move(row.values);
@@ -111,14 +110,14 @@ void Level3<T>::stream(Process& p, int k, Pivot& pivot, C bound, bool& unstable)
   std::vector<std::size_t> ready;  // indices in arrival order
   std::vector<Process::Body> branches{[&](Process& q) {
     pivot.unstable = unstable;
-    q.out(*c_.wiring.to_l4, message(pivot, "U row"));
+    to_l4(q, k, pivot, "U row");
   }};
   for (const Port& port : c_.wiring.in_ports) {
     const std::vector<std::size_t> expected = relay_rows(c_.shape, port.served, k);
     if (expected.empty()) continue;
     branches.push_back([this, &port, expected, &rows, &ready](Process& q) {
       for (std::size_t count = expected.size(); count > 0; --count) {
-        auto row = std::any_cast<RowMessage>(q.in(*port.channel).payload);
+        RowMessage row = M::row_message_of(c_.receive(q, port.channel));
         if (row.index < 1 || row.index > rows.size())
           q.stop("row number " + std::to_string(row.index) + " out of range");
         rows[row.index - 1] = std::move(row.values);
@@ -150,7 +149,8 @@ void Level3<T>::forward(Process& p, int k, elimination::Row<C>& row, std::size_t
                    "level 3: a non-finite value in row " + std::to_string(i + 1) + " of step " +
                        std::to_string(k));
   if (check.status == Status::unstable) unstable_at(k, unstable);
-  p.out(*c_.wiring.back, message(typename M::ReturnedRow{true, std::move(row), i}, "reduced row"));
+  c_.send(p, c_.wiring.back, M::to_packet(typename M::ReturnedRow{true, std::move(row), i}),
+          "reduced row");
 }
 
 // ---- recovery ----
@@ -174,22 +174,22 @@ bool Level3<T>::checked(Process& p) {
               std::to_string(c_.shape.m + 1) +
               " requests in a row to resend them (a fault no other level-2 processor could get "
               "round, or workload.recovery_timeout_us shorter than the pipeline's own pauses)");
-      p.out(*w.back, message(typename M::ReturnedRow{false, {}}, kFailLabel));
-      p.out(*w.to_l4, message(Pivot::stop(false), kFailLabel));
+      c_.send(p, w.back, M::to_packet(typename M::ReturnedRow{false, {}}), kFailLabel);
+      to_l4(p, k, Pivot::stop(false), kFailLabel);
       return false;
     }
-    Pivot u{true, false, unstable, pivot.row, pivot.scale};
-    p.out(*w.to_l4, message(u, "U row"));
+    to_l4(p, k, Pivot{true, false, unstable, pivot.row, pivot.scale}, "U row");
     if (k == 0 && c_.settings.rule.growth_check())
       bound = c_.run_piece(
           p, "bound", [&](auto& s) { return elimination::growth_bound(s, c_.settings.rule); },
           named("scale", pivot.scale));
     if (r > 0 && !return_reduced(p, k, rows, bound, unstable)) {
-      p.out(*w.to_l4, message(Pivot::stop(false), kFailLabel));
+      to_l4(p, k, Pivot::stop(false), kFailLabel);
       return false;
     }
   }
-  p.out(*w.back, message(typename M::ReturnedRow{true, {}, 0}, "done"));  // L1 resends no more
+  c_.send(p, w.back, M::to_packet(typename M::ReturnedRow{true, {}, 0}),
+          "done");  // no more resends
   return true;
 }
 
@@ -291,6 +291,11 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
     rows[row.index - 1] = row.values;
     have[row.index] = true;
   }
+}
+
+template <class T>
+void Level3<T>::to_l4(Process& p, int k, const Pivot& pivot, const char* label) const {
+  c_.send(p, c_.wiring.to_l4, M::to_packet(k, pivot), label);
 }
 
 template <class T>

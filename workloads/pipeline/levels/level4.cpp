@@ -1,28 +1,32 @@
 #include "workloads/pipeline/levels/level4.hpp"
 
-#include <any>
+#include <tuple>
 
 #include "workloads/pipeline/relay.hpp"
 
 namespace workloads::levels {
 
 template <class T>
-bool Level4<T>::round(Process& p) {
+bool Level4<T>::round(t800sim::Process& p) {
   using C = typename M::C;
+  using Packet = typename M::Packet;
   const Wiring& w = c_.wiring;
+  const t800sim::In<Packet> u_rows(w.typed(w.to_l4));
+  const t800sim::Out<Packet> answer(w.typed(w.reply));
   PipelineOutcome& outcome = c_.report.outcome;
   elimination::Rows<C> upper;
   bool unstable = false;
   for (int k = 0; k < c_.n(); ++k) {
-    auto pivot = std::any_cast<typename M::Pivot>(p.in(*w.to_l4).payload);
-    if (!pivot.ok) {
-      if (pivot.finish) return false;
+    const typename M::PacketValue u = p.in(u_rows);
+    const std::int32_t flags = std::get<0>(u);
+    if (flags & header::kStop) {
+      if (flags & header::kFinish) return false;
       outcome.end_us = p.now_us();
-      if (w.reply) p.out(*w.reply, {kHeaderBytes, {}, kFailLabel});
+      if (w.reply) p.out(answer, M::answer(false, {}), kFailLabel);
       return false;
     }
-    unstable = unstable || pivot.unstable;
-    upper.push_back(std::move(pivot.row));
+    unstable = unstable || (flags & header::kUnstable);
+    upper.push_back(M::row_of(u));
   }
   outcome.eliminated_us = p.now_us();
   const elimination::Row<C> x = c_.run_piece(
@@ -36,7 +40,7 @@ bool Level4<T>::round(Process& p) {
     values.push_back(static_cast<double>(v.value()));
   }
   const std::vector<double>& qdd = c_.report.solved(values, finite, unstable, c_.n());
-  if (w.reply) p.out(*w.reply, message(qdd, M::bytes(qdd), "qdd"));
+  if (w.reply) p.out(answer, M::answer(true, qdd), "qdd");
   return true;
 }
 

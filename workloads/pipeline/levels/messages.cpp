@@ -1,13 +1,11 @@
 #include "workloads/pipeline/levels/messages.hpp"
 
-#include <type_traits>
-
 #include "t800/payload_bytes.hpp"
 
 namespace workloads::levels {
 
-// The header word, the REALs (little-endian words, as the T800 stores them), the checksum. A
-// header of a message without a step (the original protocol's flags) is not modelled.
+// Recovery's messages: the header word, the REALs (little-endian words, as the T800 stores them),
+// the checksum. (Packets say their own, t800sim/protocol.hpp.)
 template <class T>
 void Messages<T>::register_faults() {
   using t800::flip_byte;
@@ -18,22 +16,6 @@ void Messages<T>::register_faults() {
     values[i] = C(flip_byte(values[i].value(), byte % size, mask));
     return true;
   };
-  // A row: its number in the header word, then its REALs.
-  auto row_flip = [=](auto* type) {
-    using Message = std::remove_pointer_t<decltype(type)>;
-    return [=](std::any& a, std::int64_t b, std::uint8_t x) {
-      auto& m = std::any_cast<Message&>(a);
-      if (b >= kHeaderBytes) return flip_reals(m.values, b - kHeaderBytes, x);
-      m.index = std::size_t(flip_byte(std::uint32_t(m.index), b, x));
-      return true;
-    };
-  };
-  t800::register_payload_bytes(typeid(RowMessage), row_flip(static_cast<RowMessage*>(nullptr)));
-  t800::register_payload_bytes(typeid(ReturnedRow), row_flip(static_cast<ReturnedRow*>(nullptr)));
-  t800::register_payload_bytes(typeid(Pivot), [=](std::any& a, std::int64_t b, std::uint8_t x) {
-    auto& m = std::any_cast<Pivot&>(a);
-    return b >= kHeaderBytes && flip_reals(m.row, b - kHeaderBytes, x);
-  });
   t800::register_payload_bytes(
       typeid(CheckedRow), [=](std::any& a, std::int64_t b, std::uint8_t x) {
         auto& m = std::any_cast<CheckedRow&>(a);

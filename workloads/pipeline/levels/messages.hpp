@@ -1,16 +1,20 @@
 // What the pipeline's levels send each other: one struct per message, and its protocol -- the bytes
 // it takes on the wire follow from the value, as occam's counted protocols' do: one INT32 header
-// word (a row's number, a step, a status flag) and the REALs (REAL32 for float, REAL64 for double),
-// with recovery's messages a checksum word after them (checksum.hpp). message() makes the
-// simulator's message with those bytes, so no call site writes a byte count.
+// word (a row's number, a step, status flags) and the REALs (REAL32 for float, REAL64 for double),
+// with recovery's messages a checksum word after them (checksum.hpp). Strict and overlapped steps'
+// messages travel as a Packet over the SDK's typed channels (Packed<INT, Block<REAL>>, its bytes
+// from the protocol); recovery's and the client's system still as the simulator's messages, which
+// message() makes with their bytes, so no call site writes a byte count.
 #pragma once
 
+#include <any>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "t800/message.hpp"
+#include "t800sim/protocol.hpp"
 #include "workloads/dynamics/counted.hpp"
 #include "workloads/elimination/gauss.hpp"
 #include "workloads/elimination/system.hpp"
@@ -21,6 +25,19 @@ namespace workloads::levels {
 // One INT32 word in front of every row or matrix: the row's number (or the step) and a status flag.
 constexpr std::int64_t kHeaderBytes = 4;
 constexpr std::int64_t kChecksumBytes = 4;
+
+// The header word of a packet (Messages::Packet): a number (a row's, or a step) in the low bits,
+// status flags in the high ones, as the occam program's header word has them. A stop ends the
+// pipeline: a failure, or with kFinish the client's finish; kUnstable: the pivots have grown past
+// the limit.
+namespace header {
+constexpr std::int32_t kStop = 1 << 30;
+constexpr std::int32_t kFinish = 1 << 29;
+constexpr std::int32_t kUnstable = 1 << 28;
+constexpr std::int32_t kScale =
+    1 << 27;  // a pivot row's last REAL is the scale (Pivot::with_scale)
+constexpr std::int32_t kNumber = kScale - 1;
+}  // namespace header
 
 template <class T>
 struct Messages {
@@ -40,6 +57,8 @@ struct Messages {
     return kReal * n * (n + 1);
   }
 
+  // The messages of strict and overlapped steps, as the levels hold them; on the wire each is a
+  // Packet (to_packet, and back).
   // A step's pivot row, L1 -> level 2 -> L3 -> L4; a stop (ok = false) is a header word.
   struct Pivot {
     bool ok = true;
@@ -55,15 +74,11 @@ struct Messages {
       m.finish = finish;
       return m;
     }
-    std::int64_t bytes() const {
-      return ok ? reals(row.size() + (with_scale ? 1 : 0)) : kHeaderBytes;
-    }
   };
   // A row to eliminate (L1 -> level 2) or eliminated (level 2 -> L3).
   struct RowMessage {
     std::size_t index = 0;  // position in the reduced system
     Row values;
-    std::int64_t bytes() const { return reals(values.size()); }
   };
   // The reduced matrix goes back to L1 one row per message, like every other row transfer; a
   // failed step sends one header instead.
@@ -72,10 +87,64 @@ struct Messages {
     Row values;
     // Position in the next step's system (with overlap the rows come back as they are ready).
     std::size_t index = 0;
-    std::int64_t bytes() const { return ok ? reals(values.size()) : kHeaderBytes; }
   };
-  // q̈ back to the client (an empty one is a failure's header word).
-  static std::int64_t bytes(const std::vector<double>& qdd) { return reals(qdd.size()); }
+  // What the SDK's typed channels carry: the header word and a row in one communication (occam:
+  // both in one buffer, sent as a slice on a CHAN OF ANY), the REALs as T.
+  using Packet = t800sim::Packed<t800sim::INT, t800sim::Block<T>>;
+  using PacketValue = t800sim::value_of<Packet>;
+  static PacketValue packet(std::int32_t header, const Row& row) {
+    std::vector<T> values;
+    for (const C& v : row) values.push_back(v.value());
+    return {header, std::move(values)};
+  }
+  static Row row_of(const PacketValue& packet) {
+    const std::vector<T>& values = std::get<1>(packet);
+    return Row(values.begin(), values.end());
+  }
+  // A pivot row (L1 -> level 2 -> L3; a row of U, L3 -> L4) with its step; a stop is its header
+  // word alone.
+  static PacketValue to_packet(int step, const Pivot& pivot) {
+    if (!pivot.ok) return {header::kStop | (pivot.finish ? header::kFinish : 0), {}};
+    Row values = pivot.row;
+    if (pivot.with_scale) values.push_back(pivot.scale);
+    return packet(
+        step | (pivot.unstable ? header::kUnstable : 0) | (pivot.with_scale ? header::kScale : 0),
+        values);
+  }
+  static Pivot pivot_of(const PacketValue& packet) {
+    const std::int32_t flags = std::get<0>(packet);
+    if (flags & header::kStop) return Pivot::stop(flags & header::kFinish);
+    Pivot pivot;
+    pivot.unstable = flags & header::kUnstable;
+    pivot.with_scale = flags & header::kScale;
+    pivot.row = row_of(packet);
+    if (pivot.with_scale) {
+      pivot.scale = pivot.row.back();
+      pivot.row.pop_back();
+    }
+    return pivot;
+  }
+  static PacketValue to_packet(const RowMessage& row) {
+    return packet(std::int32_t(row.index), row.values);
+  }
+  static RowMessage row_message_of(const PacketValue& packet) {
+    return {std::size_t(std::get<0>(packet) & header::kNumber), row_of(packet)};
+  }
+  // A failed step's is its header word alone.
+  static PacketValue to_packet(const ReturnedRow& row) {
+    if (!row.ok) return {header::kStop, {}};
+    return packet(std::int32_t(row.index), row.values);
+  }
+  static ReturnedRow returned_row_of(const PacketValue& packet) {
+    const std::int32_t flags = std::get<0>(packet);
+    if (flags & header::kStop) return {false, {}};
+    return {true, row_of(packet), std::size_t(flags & header::kNumber)};
+  }
+  // q̈ back to the client (the REALs of its precision), or a failure: the header word alone.
+  static PacketValue answer(bool ok, const std::vector<double>& qdd) {
+    if (!ok) return {header::kStop, {}};
+    return {0, std::vector<T>(qdd.begin(), qdd.end())};
+  }
 
   // Recovery's messages (PipelineSettings::recovery): each carries the step it belongs to and a
   // checksum of its header word and REALs.

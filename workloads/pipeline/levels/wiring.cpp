@@ -1,7 +1,9 @@
 #include "workloads/pipeline/levels/wiring.hpp"
 
+#include <memory>
 #include <string>
 
+#include "network/channel.hpp"
 #include "workloads/pipeline/relay.hpp"
 
 namespace workloads::levels {
@@ -15,7 +17,7 @@ bool behind(const network::Machine& machine, int relay, int level, int node) {
 // A level-2 processor that is L1's neighbour gets a channel of its own; one behind the fan-out X
 // shares X's channel; any other gets a channel the network routes.
 void plan_level1_side(Wiring& w, network::Machine& machine, const PipelineShape& shape,
-                      const PipelineNodes& nodes, Serve serve) {
+                      const PipelineNodes& nodes, Serve serve, SpawnRelay spawn) {
   Relay fan_out;
   fan_out.node = machine.topology().find("X");
   for (int e = 0; e < shape.m; ++e) {
@@ -34,12 +36,12 @@ void plan_level1_side(Wiring& w, network::Machine& machine, const PipelineShape&
   fan_out.inputs.push_back(&machine.channel("L1->X", nodes.l1, fan_out.node));
   w.out_ports.push_back({fan_out.inputs.back(), fan_out.served});
   fan_out.rounds = serve == Serve::once ? 1 : Relay::kUntilStopped;
-  spawn_fan_out(machine, shape, fan_out);
+  spawn(machine, shape, fan_out);
 }
 
 // The same on L3's side, with the fan-in Y.
 void plan_level3_side(Wiring& w, network::Machine& machine, const PipelineShape& shape,
-                      const PipelineNodes& nodes, Serve serve) {
+                      const PipelineNodes& nodes, Serve serve, SpawnRelay spawn) {
   Relay fan_in;
   fan_in.node = machine.topology().find("Y");
   for (int e = 0; e < shape.m; ++e) {
@@ -62,21 +64,40 @@ void plan_level3_side(Wiring& w, network::Machine& machine, const PipelineShape&
   fan_in.outputs.push_back(&machine.channel("Y->L3", fan_in.node, nodes.l3));
   w.in_ports.push_back({fan_in.outputs.back(), fan_in.served});
   fan_in.rounds = serve == Serve::once ? 1 : Relay::kUntilStopped;
-  spawn_fan_in(machine, shape, fan_in);
+  spawn(machine, shape, fan_in);
 }
 
 }  // namespace
 
 Wiring Wiring::plan(network::Machine& machine, const PipelineShape& shape,
-                    const PipelineNodes& nodes, int client, Serve serve) {
+                    const PipelineNodes& nodes, int client, Serve serve, SpawnRelay fan_out,
+                    SpawnRelay fan_in) {
   Wiring w;
   w.input = &machine.channel("system", client, nodes.l1);
-  plan_level1_side(w, machine, shape, nodes, serve);
-  plan_level3_side(w, machine, shape, nodes, serve);
+  plan_level1_side(w, machine, shape, nodes, serve, fan_out);
+  plan_level3_side(w, machine, shape, nodes, serve, fan_in);
   w.back = &machine.channel("L3->L1", nodes.l3, nodes.l1);
   w.to_l4 = &machine.channel("L3->L4", nodes.l3, nodes.l4);
   if (serve == Serve::until_finish) w.reply = &machine.channel("qdd", nodes.l4, client);
+  // The typed ends of the levels' channels (not the relays' own).
+  std::vector<network::Channel*> all{w.input, w.reply, w.back, w.to_l4};
+  all.insert(all.end(), w.e_in.begin(), w.e_in.end());
+  all.insert(all.end(), w.e_out.begin(), w.e_out.end());
+  for (const auto* ports : {&w.out_ports, &w.in_ports})
+    for (const Port& port : *ports) all.push_back(port.channel);
+  for (network::Channel* channel : all) {
+    if (!channel || w.typed_.count(channel)) continue;
+    auto slot = std::make_unique<t800sim::detail::ChannelSlot>();
+    slot->name = channel->name;
+    slot->impl = channel;
+    w.typed_[channel] = std::move(slot);
+  }
   return w;
+}
+
+t800sim::detail::ChannelSlot* Wiring::typed(const network::Channel* channel) const {
+  const auto found = typed_.find(channel);
+  return found == typed_.end() ? nullptr : found->second.get();
 }
 
 std::vector<int> Wiring::takers(const PipelineShape& shape, const Port& port, int k) {

@@ -1,4 +1,4 @@
-#include "workloads/farm/schedule.hpp"
+#include "t800sim/farm_schedule.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -7,11 +7,12 @@
 
 #include "workloads/setting_error.hpp"
 
-namespace workloads {
+namespace t800sim {
 
 namespace {
 
-double finish(const std::vector<int>& tasks, const std::vector<double>& task_ns, const WorkerCosts& w) {
+double finish(const std::vector<int>& tasks, const std::vector<double>& task_ns,
+              const WorkerCosts& w) {
   double t = w.start_ns + w.finish_ns;
   for (int i : tasks) t += task_ns[i] + w.per_result_ns;
   return t;
@@ -21,8 +22,10 @@ int most_loaded(const std::vector<double>& finish_ns) {
   return int(std::max_element(finish_ns.begin(), finish_ns.end()) - finish_ns.begin());
 }
 
-// One improving move or swap of a task off the most loaded worker; false when none lowers the makespan.
-bool improve_once(Allocation& a, const std::vector<double>& task_ns, const std::vector<WorkerCosts>& w) {
+// One improving move or swap of a task off the most loaded worker; false when none lowers the
+// makespan.
+bool improve_once(Allocation& a, const std::vector<double>& task_ns,
+                  const std::vector<WorkerCosts>& w) {
   std::vector<double> f = estimated_finish_ns(a, task_ns, w);
   const int hot = most_loaded(f);
   const double makespan = f[hot];
@@ -71,6 +74,14 @@ int index_of(const std::vector<std::string>& names, const std::string& name) {
   return it == names.end() ? -1 : int(it - names.begin());
 }
 
+// The first few names, for an error that says what would be valid.
+std::string some_names(const std::vector<std::string>& names) {
+  constexpr std::size_t kShown = 6;
+  std::string s;
+  for (std::size_t i = 0; i < names.size() && i < kShown; ++i) s += (i ? " " : "") + names[i];
+  return names.size() > kShown ? s + " ... " + names.back() : s;
+}
+
 }  // namespace
 
 std::vector<double> estimated_finish_ns(const Allocation& a, const std::vector<double>& task_ns,
@@ -80,10 +91,12 @@ std::vector<double> estimated_finish_ns(const Allocation& a, const std::vector<d
   return f;
 }
 
-Allocation schedule_static(const std::vector<double>& task_ns, const std::vector<WorkerCosts>& workers) {
+Allocation schedule_static(const std::vector<double>& task_ns,
+                           const std::vector<WorkerCosts>& workers) {
   std::vector<int> order(task_ns.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return task_ns[a] > task_ns[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return task_ns[a] > task_ns[b]; });
 
   Allocation a(workers.size());
   std::vector<double> f;
@@ -103,31 +116,35 @@ Allocation schedule_static(const std::vector<double>& task_ns, const std::vector
 }
 
 Allocation parse_allocation(const std::string& text, const std::vector<std::string>& task_names,
-                            const std::vector<std::string>& worker_names) {
-  auto fail = [](const std::string& message) {
-    throw SettingError({"workload.allocation"}, "workload.allocation: " + message);
+                            const std::vector<std::string>& worker_names,
+                            const std::string& setting) {
+  auto fail = [&setting](const std::string& message) {
+    throw workloads::SettingError({setting}, setting + ": " + message);
   };
   Allocation a(worker_names.size());
   std::vector<int> owner(task_names.size(), -1);
   for (const std::string& group : split(text, ';')) {
     if (trimmed(group).empty()) continue;
     const auto colon = group.find(':');
-    if (colon == std::string::npos) fail("'" + trimmed(group) + "' should read 'WORKER: TASK TASK ...'");
+    if (colon == std::string::npos)
+      fail("'" + trimmed(group) + "' should read 'WORKER: TASK TASK ...'");
     const std::string worker = trimmed(group.substr(0, colon));
     const int w = index_of(worker_names, worker);
     if (w < 0) fail("'" + worker + "' is not a worker of this network");
     std::stringstream tasks(group.substr(colon + 1));
     for (std::string name; tasks >> name;) {
       const int t = index_of(task_names, name);
-      if (t < 0) fail("no subtask '" + name + "' in this model (names look like D11, C1_23, h2)");
-      if (owner[t] >= 0) fail("subtask " + name + " is given to both " + worker_names[owner[t]] + " and " + worker);
+      if (t < 0)
+        fail("no task '" + name + "' in this farm (its tasks: " + some_names(task_names) + ")");
+      if (owner[t] >= 0)
+        fail("task " + name + " is given to both " + worker_names[owner[t]] + " and " + worker);
       owner[t] = w;
       a[w].push_back(t);
     }
   }
   for (std::size_t t = 0; t < owner.size(); ++t)
-    if (owner[t] < 0) fail("subtask " + task_names[t] + " is given to no worker");
+    if (owner[t] < 0) fail("task " + task_names[t] + " is given to no worker");
   return a;
 }
 
-}  // namespace workloads
+}  // namespace t800sim

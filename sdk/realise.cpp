@@ -1,0 +1,105 @@
+#include "sdk/realise.hpp"
+
+#include <stdexcept>
+
+#include "network/machine.hpp"
+
+namespace t800sim::detail {
+
+namespace {
+
+class Realisation {
+ public:
+  Realisation(const std::string& kind, Builder& builder, std::vector<PlacedProcess> placed)
+      : kind_(kind), builder_(builder), placed_(std::move(placed)) {}
+
+  void join_channels(network::Machine& machine) {
+    for (ChannelSlot& slot : builder_.declared_channels()) {
+      if (slot.writer.empty() || slot.reader.empty())
+        throw std::invalid_argument("workload " + kind_ + ": channel " + slot.name + " has " +
+                                    (slot.writer.empty()
+                                         ? "no writer (its reader is " + slot.reader + ")"
+                                         : "no reader (its writer is " + slot.writer + ")"));
+      const PlacedProcess& from = placed(end_process(slot.writer, slot), slot.name);
+      const PlacedProcess& to = placed(end_process(slot.reader, slot), slot.name);
+      try {
+        slot.impl = &machine.channel(slot.name, from.node, to.node);
+      } catch (const std::runtime_error& e) {
+        const std::string message =
+            "channel " + slot.name + " from " + from.name + " to " + to.name + ": " + e.what();
+        if (from.where) throw network::ConfigError(*from.where, "[placement] " + message);
+        if (to.where) throw network::ConfigError(*to.where, "[placement] " + message);
+        throw std::invalid_argument("workload " + kind_ + ": " + message);
+      }
+    }
+  }
+
+  void declare_code(network::Machine& machine) const {
+    for (const Builder::DeclaredCode& c : builder_.declared_code())
+      machine.declare_code(placed(c.process, "").node, c.process, c.kernel.work().code);
+  }
+
+  void spawn(network::Machine& machine) const {
+    for (const PlacedProcess& p : placed_) {
+      if (!p.decl->body) continue;
+      const auto priority = p.decl->high_priority ? t800::Priority::high : t800::Priority::low;
+      const Process::IndexedBody& body = p.decl->body;
+      const int index = p.index;
+      machine.spawn(p.node, p.name, priority, [&body, index](network::Process& impl) {
+        Process process(impl);
+        body(process, index);
+      });
+    }
+  }
+
+  std::vector<PlacedProcess> placed() && { return std::move(placed_); }
+
+ private:
+  const PlacedProcess& placed(const std::string& process, const std::string& channel) const {
+    for (const PlacedProcess& p : placed_)
+      if (p.name == process) return p;
+    std::string message = "workload " + kind_ + ": ";
+    message += channel.empty() ? "code declared for process " + process
+                               : "channel " + channel + " is joined to process " + process;
+    for (const ProcessDecl& d : builder_.declared_processes())
+      if (d.group && d.name == process)
+        throw std::invalid_argument(message + ", a group of " + std::to_string(d.count) +
+                                    ": name one member, " + process + "[i]");
+    throw std::invalid_argument(message + ", which the program does not declare");
+  }
+
+  // Channel i of an array named after a group of as many processes joins member i.
+  std::string end_process(const std::string& process, const ChannelSlot& slot) const {
+    if (slot.index < 0) return process;
+    for (const ProcessDecl& d : builder_.declared_processes())
+      if (d.group && d.name == process) {
+        if (d.count != slot.array)
+          throw std::invalid_argument(
+              "workload " + kind_ + ": channel " + slot.name + " is one of " +
+              std::to_string(slot.array) + ", joined to process group " + process + " of " +
+              std::to_string(d.count) + ": an array is joined to a group of its size");
+        return process + "[" + std::to_string(slot.index) + "]";
+      }
+    return process;
+  }
+
+  const std::string& kind_;
+  Builder& builder_;
+  std::vector<PlacedProcess> placed_;
+};
+
+}  // namespace
+
+// Nothing runs before every declaration is known good: the processes are placed, the channels
+// joined and routed, then the processes spawned.
+std::vector<PlacedProcess> realise(const std::string& kind, Builder& builder,
+                                   network::Machine& machine,
+                                   const std::vector<workloads::PlacementEntry>& scene) {
+  Realisation r(kind, builder, place(kind, builder, machine.topology(), scene));
+  r.join_channels(machine);
+  r.declare_code(machine);
+  r.spawn(machine);
+  return std::move(r).placed();
+}
+
+}  // namespace t800sim::detail

@@ -1,0 +1,24 @@
+// A program as declared (t800sim/program.hpp) made real on a machine: its processes placed, its
+// channels joined and routed, its kernels' code declared, its processes spawned. The SDK's
+// programs (sdk/program_workload.cpp) and the built-in programs written with it
+// (workloads/farm/) both go through here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sdk/placement.hpp"
+
+namespace network {
+class Machine;
+}
+
+namespace t800sim::detail {
+
+// `kind` names the program in errors. A process declared without a body is one the caller spawns
+// itself (a built-in workload's master): it is placed and its channels joined, nothing more.
+std::vector<PlacedProcess> realise(const std::string& kind, Builder& builder,
+                                   network::Machine& machine,
+                                   const std::vector<workloads::PlacementEntry>& scene);
+
+}  // namespace t800sim::detail
