@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "network/alt.hpp"
+#include "t800sim/alt.hpp"
 #include "workloads/pipeline/relay.hpp"
 
 namespace workloads::levels {
@@ -241,9 +241,9 @@ bool Level3<T>::collect_checked(Process& p, int k, CheckedPivot& pivot, Rows& ro
   }
 }
 
-// Level 3's ALT over the level-2 processors it still listens to, with a timer guard that ends the
-// wait settings.timeout_us after the last message (first_wait_us after the start); a message that
-// stops half-way (InputOrFail) is given up with its processor.
+// Level 3's ALT (the SDK's) over the level-2 processors it still listens to, with a timer guard
+// that ends the wait settings.timeout_us after the last message (first_wait_us after the start); a
+// message that stops half-way (an InputOrFail guard) is given up with its processor.
 template <class T>
 void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
                              std::vector<bool>& have, std::vector<int>& damaged,
@@ -253,17 +253,18 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
   const int m = c_.shape.m;
   const auto ticks = std::int64_t(std::ceil(c_.settings.timeout_us / p.tick_us()));
   std::int64_t after = p.clock() + std::int64_t(std::ceil(first_wait_us / p.tick_us()));
+  t800sim::Process sdk(p);
   while (std::find(have.begin(), have.end(), false) != have.end()) {
-    std::vector<network::Guard> guards;
+    t800sim::Alt alt(sdk);
+    std::optional<typename M::CheckedValue> received;
     for (int e = 0; e < m; ++e)
-      guards.push_back(
-          {network::Guard::Kind::input, e_out[std::size_t(e)], 0, !lost_[std::size_t(e)]});
-    guards.push_back({network::Guard::Kind::timer, nullptr, after, true});
-    const int g = network::alternate(p, guards);
+      alt.input_or_fail(
+          c_.checked_in(e_out[std::size_t(e)]), longest_message_us_,
+          [&received](std::optional<typename M::CheckedValue> v) { received = std::move(v); },
+          !lost_[std::size_t(e)]);
+    alt.after(after, [] {});
+    const int g = alt.select();
     if (g == m) return;  // the timer: nothing more is coming
-    // A message that has started arrives within its time on the wire, unless a fault stops it.
-    auto received = t800sim::Process(p).in_or_fail(c_.checked_in(e_out[std::size_t(g)]),
-                                                   p.now_us() + longest_message_us_);
     if (!received) {
       lost_[std::size_t(g)] = true;
       continue;
