@@ -42,6 +42,16 @@ class Alt {
           cs[i].in(), [branch, i](const value_of<P>& v) { branch(int(i), v); }, when);
     return *this;
   }
+  // c ? v with InputOrFail.t (Process::in_or_fail): once the guard is chosen the input gives up
+  // `within_us` later -- a message that has started arrives within its time on the wire unless a
+  // fault stops it -- then branch(the value, or nullopt).
+  template <class P, class F>
+  Alt& input_or_fail(const In<P>& c, double within_us, F branch, bool when = true) {
+    Process* p = &process_;
+    add(Kind::input, c.slot(), 0, when,
+        [p, c, within_us, branch] { branch(p->in_or_fail(c, p->now_us() + within_us)); });
+    return *this;
+  }
   // TIMER ? AFTER t
   Alt& after(std::int64_t t, std::function<void()> branch, bool when = true);
   Alt& skip(std::function<void()> branch, bool when = true);

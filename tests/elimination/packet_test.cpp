@@ -60,4 +60,73 @@ TEST(PipelinePacket, ACorruptedByteLandsInTheRowNumberOrTheReal) {
   EXPECT_EQ(M::row_message_of(std::any_cast<M::PacketValue>(real_hit)).values[1].value(), -2.0f);
 }
 
+// Recovery's messages, by hand: the header word, four bytes per REAL32, the checksum word; a stop
+// the header word alone; a resend request a word per row or processor and the header word.
+TEST(PipelineCheckedPacket, BytesByHand) {
+  M::CheckedRow row{2, 3, false, {C(1.0f), C(2.0f), C(3.0f)}, 0};
+  row.checksum = row.sum();
+  EXPECT_EQ(t800sim::wire_bytes<M::Checked>(M::to_checked(row)), 4 + 3 * 4 + 4);
+  M::CheckedPivot pivot{0, false, true, {C(1.0f), C(0.5f)}, C(8.0f), 0};
+  // Step 0 with the growth check: the scale travels, one more REAL.
+  EXPECT_EQ(t800sim::wire_bytes<M::Checked>(M::to_checked(pivot, true)), 4 + 3 * 4 + 4);
+  EXPECT_EQ(t800sim::wire_bytes<M::Checked>(M::to_checked(pivot, false)), 4 + 2 * 4 + 4);
+  M::CheckedPivot stop;
+  stop.stop = true;
+  EXPECT_EQ(t800sim::wire_bytes<M::Checked>(M::to_checked(stop, true)), 4);
+  const M::Resend request{{0, 2, 4}, {1}, {2}};
+  EXPECT_EQ(t800sim::wire_bytes<M::Checked>(M::to_checked(request)), 4 * (3 + 1 + 1 + 1));
+}
+
+TEST(PipelineCheckedPacket, WhatALevelHoldsSurvivesTheWire) {
+  M::CheckedRow row{2, 3, true, {C(1.0f)}, 0};
+  row.checksum = row.sum();
+  const M::CheckedValue sent = M::to_checked(row);
+  EXPECT_FALSE(M::is_pivot(sent));
+  const M::CheckedRow back = M::checked_row_of(sent);
+  EXPECT_EQ(back.step, 2);
+  EXPECT_EQ(back.index, 3u);
+  EXPECT_TRUE(back.bad);
+  EXPECT_EQ(back.checksum, row.checksum);
+  M::CheckedPivot pivot{0, false, true, {C(1.0f), C(0.5f)}, C(8.0f), 0};
+  const M::CheckedPivot p = M::checked_pivot_of(M::to_checked(pivot, true), true);
+  EXPECT_TRUE(M::is_pivot(M::to_checked(pivot, true)));
+  EXPECT_TRUE(p.forward);
+  EXPECT_FALSE(p.stop);
+  EXPECT_EQ(p.row.size(), 2u);
+  EXPECT_EQ(p.scale.value(), 8.0f);
+  M::CheckedPivot stop;
+  stop.stop = true;
+  EXPECT_TRUE(M::checked_pivot_of(M::to_checked(stop, false), false).stop);
+  const M::Resend request{{0, 2, 4}, {1}, {2}};
+  const M::CheckedValue asked = M::to_checked(request);
+  EXPECT_TRUE(M::is_resend(asked));
+  const M::Resend r = M::resend_of(asked);
+  EXPECT_EQ(r.rows, (std::vector<std::size_t>{0, 2, 4}));
+  EXPECT_EQ(r.lost, std::vector<int>{1});
+  EXPECT_EQ(r.avoid, std::vector<int>{2});
+  // L3's reduced rows on the same channel are not requests.
+  EXPECT_FALSE(M::is_resend(M::to_checked(M::ReturnedRow{true, {C(1.0f)}, 1})));
+}
+
+// A changed byte: in the header word, the row's number (3 ^ 1); in the last word, the checksum,
+// which then no longer matches.
+TEST(PipelineCheckedPacket, ACorruptedByteLandsInTheNumberOrTheChecksum) {
+  M::CheckedRow row{1, 3, false, {C(1.0f), C(2.0f)}, 0};
+  row.checksum = row.sum();
+  struct Wire : t800sim::detail::Wire {
+    void send(std::int64_t, std::any v) override { value = std::move(v); }
+    std::any receive() override { return value; }
+    std::any value;
+  } wire;
+  t800sim::protocol<M::Checked>::send(wire, M::to_checked(row));
+  std::any header_hit = wire.value;
+  ASSERT_TRUE(t800::flip_payload_byte(header_hit, 0, 0x01));
+  EXPECT_EQ(M::checked_row_of(std::any_cast<M::CheckedValue>(header_hit)).index, 2u);
+  std::any checksum_hit = wire.value;
+  ASSERT_TRUE(t800::flip_payload_byte(checksum_hit, 4 + 2 * 4, 0x01));
+  const M::CheckedRow hit = M::checked_row_of(std::any_cast<M::CheckedValue>(checksum_hit));
+  EXPECT_EQ(hit.checksum, row.checksum ^ 1u);
+  EXPECT_NE(hit.sum(), hit.checksum);
+}
+
 }  // namespace

@@ -91,4 +91,32 @@ TEST(SdkReliable, AProtocolGivesUpAtItsFirstItem) {
   EXPECT_LT(gave_up_us, 310.0);
 }
 
+// An ALT's InputOrFail guard: chosen when the message arrives, its branch gets the value (the
+// writer on another processor, the timer guard later); a false pre-condition leaves the timer.
+TEST(SdkReliable, AnAltInputOrFailGuardDeliversTheValue) {
+  std::optional<INT> got;
+  int chosen = -1, hidden = -1;
+  auto* program = new Lambda([&](Builder& b) {
+    const auto c = b.channel<INT>("c", "sender", "receiver");
+    b.process("sender", [c](Process& p) { p.out(c, 9); }).placed_on("P1");
+    b.process("receiver", [&, c](Process& p) {
+       hidden = Alt(p)
+                    .input_or_fail(
+                        c.in(), 50.0, [&](std::optional<INT> v) { got = v; }, false)
+                    .after(p.timer() + 5, [] {})
+                    .select();
+       EXPECT_FALSE(got.has_value());
+       chosen = Alt(p)
+                    .input_or_fail(c.in(), 50.0, [&](std::optional<INT> v) { got = v; })
+                    .after(p.timer() + 100000, [] {})
+                    .select();
+     }).high();
+  });
+  ASSERT_TRUE(sdk_test::run(program, sdk_test::chain(1)).blocked.empty());
+  EXPECT_EQ(hidden, 1);
+  EXPECT_EQ(chosen, 0);
+  ASSERT_TRUE(got.has_value());
+  EXPECT_EQ(*got, 9);
+}
+
 }  // namespace

@@ -64,7 +64,6 @@ class PipelineProgram<T>::Levels {
       throw std::invalid_argument("elimination pipeline: overlap serves one system only");
     if (settings.recovery && serve != Serve::once)
       throw std::invalid_argument("elimination pipeline: recovery serves one system only");
-    M::register_faults();
     wiring_ = levels::Wiring::plan(machine, shape, nodes, client, serve, spawn_fan_out<T>,
                                    spawn_fan_in<T>);
     const levels::Context<T> context{settings, shape, nodes, wiring_, report_, pieces_, serve};
@@ -73,7 +72,9 @@ class PipelineProgram<T>::Levels {
     const t800::LinkTiming link(machine.options().link);
     typename M::CheckedRow longest;
     longest.values.resize(std::size_t(n() + 2));
-    const double longest_message_us = 2 * link.arrival_ns(longest.bytes()) / 1000 + 10;
+    const std::int64_t longest_bytes =
+        t800sim::protocol<typename M::Checked>::bytes(M::to_checked(longest));
+    const double longest_message_us = 2 * link.arrival_ns(longest_bytes) / 1000 + 10;
     level1_ = std::make_unique<levels::Level1<T>>(context);
     for (int e = 0; e < shape.m; ++e)
       level2_.push_back(std::make_unique<levels::Level2<T>>(context, e));
@@ -86,8 +87,8 @@ class PipelineProgram<T>::Levels {
     for (int e = 0; e < shape.m; ++e)
       machine.spawn(nodes.e[std::size_t(e)], "level2", low, [this, e](Process& p) {
         levels::Level2<T>& level = *level2_[std::size_t(e)];
-        if (settings.recovery) return level.checked(p);
         t800sim::Process level2(p);
+        if (settings.recovery) return level.checked(level2);
         levels::loop(serve_, level2, [&level](t800sim::Process& q) { return level.round(q); });
       });
     machine.spawn(nodes.l3, "level3", low, [this](Process& p) {

@@ -65,10 +65,22 @@ struct Context {
     return t800sim::Process(p).in(t800sim::In<Packet>(wiring.typed(c)));
   }
 
+  // Recovery's messages (Messages::Checked) over the same channels, with the SDK's typed ends.
+  using Checked = typename Messages<T>::Checked;
+  t800sim::Out<Checked> checked_out(const network::Channel* c) const {
+    return t800sim::Out<Checked>(wiring.typed(c));
+  }
+  t800sim::In<Checked> checked_in(const network::Channel* c) const {
+    return t800sim::In<Checked>(wiring.typed(c));
+  }
+
   // The checksum loop over a message of `count` REALs and its header, on p's processor.
   void charge_checksum(Process& p, std::size_t count) const {
     const std::int64_t words = 1 + std::int64_t(count) * std::int64_t(sizeof(T) / 4);
     p.compute(p.machine().compute_model(p.node()).process_cycles(checksum_code(words)), "checksum");
+  }
+  void charge_checksum(t800sim::Process& p, std::size_t count) const {
+    charge_checksum(p.impl(), count);
   }
 };
 

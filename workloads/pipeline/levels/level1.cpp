@@ -6,7 +6,6 @@
 #include <numeric>
 #include <string>
 
-#include "network/reliable.hpp"
 #include "workloads/pipeline/relay.hpp"
 
 namespace workloads::levels {
@@ -77,7 +76,9 @@ bool Level1<T>::steps(Process& p, Rows first, C scale, C limit) {
     if (step.interchanged) ++outcome.interchanges;
     const C step_scale = k == 0 ? scale : C(0);
     if (recovery) {
-      pivot_ = typename M::CheckedPivot{k, false, false, std::move(step.normalised), step_scale};
+      // The scale only where it travels (step 0, for L3's growth check).
+      pivot_ = typename M::CheckedPivot{k, false, false, std::move(step.normalised),
+                                        rule.growth_check() ? step_scale : C(0)};
       std::vector<std::size_t> all(std::size_t(n - k));  // the pivot row (0) and rows 1 .. n-1-k
       std::iota(all.begin(), all.end(), std::size_t(0));
       hand_out_checked(p, k, all, {});
@@ -236,9 +237,9 @@ void Level1<T>::hand_out_checked(Process& p, int k, std::vector<std::size_t> row
     branches.push_back([this, e, k, forwarder, growth_check, &given](Process& q) {
       typename M::CheckedPivot pivot = pivot_;
       pivot.forward = forwarder;
-      network::Channel& c = *c_.wiring.e_in[std::size_t(e)];
-      if (!network::out_or_fail(q, c, message(pivot, pivot.bytes(growth_check), "pivot row"),
-                                deadline(q))) {
+      t800sim::Process sdk(q);
+      const auto c = c_.checked_out(c_.wiring.e_in[std::size_t(e)]);
+      if (!sdk.out_or_fail(c, M::to_checked(pivot, growth_check), deadline(q), "pivot row")) {
         unused_[std::size_t(e)] = true;
         return;
       }
@@ -246,7 +247,7 @@ void Level1<T>::hand_out_checked(Process& p, int k, std::vector<std::size_t> row
         typename M::CheckedRow row{k, i, false, matrices_[std::size_t(k)][i], 0};
         row.checksum = row.sum();
         c_.charge_checksum(q, row.values.size());
-        if (!network::out_or_fail(q, c, message(row, "row"), deadline(q))) {
+        if (!sdk.out_or_fail(c, M::to_checked(row), deadline(q), "row")) {
           unused_[std::size_t(e)] = true;
           return;
         }
@@ -260,20 +261,27 @@ void Level1<T>::hand_out_checked(Process& p, int k, std::vector<std::size_t> row
 template <class T>
 bool Level1<T>::next_matrix_checked(Process& p, int k) {
   using ReturnedRow = typename M::ReturnedRow;
+  t800sim::Process sdk(p);
+  const auto back = c_.checked_in(c_.wiring.back);
   for (;;) {
-    t800::Message m = p.in(*c_.wiring.back);
-    if (const auto* request = std::any_cast<typename M::Resend>(&m.payload)) {
-      for (int e : request->lost) unused_[std::size_t(e)] = true;
-      hand_out_checked(p, k - 1, request->rows, request->avoid);
+    const typename M::CheckedValue m = sdk.in(back);
+    if (M::is_resend(m)) {
+      const typename M::Resend request = M::resend_of(m);
+      for (int e : request.lost)
+        if (e >= 0 && e < c_.shape.m) unused_[std::size_t(e)] = true;
+      std::vector<std::size_t> rows;
+      for (std::size_t i : request.rows)
+        if (i < std::size_t(c_.n() - (k - 1))) rows.push_back(i);
+      hand_out_checked(p, k - 1, rows, request.avoid);
       continue;
     }
-    ReturnedRow first = M::returned_row_of(std::any_cast<typename M::PacketValue>(m.payload));
+    ReturnedRow first = M::returned_row_of(m);
     if (!first.ok) return false;
     if (k == c_.n()) return true;  // L3's word that the last step is complete
     Rows& reduced = matrices_[std::size_t(k)];
     reduced = {std::move(first.values)};
     for (int i = 1; i < c_.n() - k; ++i) {
-      ReturnedRow row = M::returned_row_of(c_.receive(p, c_.wiring.back));
+      ReturnedRow row = M::returned_row_of(sdk.in(back));
       if (!row.ok) return false;
       reduced.push_back(std::move(row.values));
     }
@@ -290,8 +298,8 @@ void Level1<T>::stop_level2(Process& p) {
     branches.push_back([this, e](Process& q) {
       typename M::CheckedPivot stop;
       stop.stop = true;
-      if (network::out_or_fail(q, *c_.wiring.e_in[std::size_t(e)],
-                               message(stop, kHeaderBytes, "stop"), deadline(q)))
+      if (t800sim::Process(q).out_or_fail(c_.checked_out(c_.wiring.e_in[std::size_t(e)]),
+                                          M::to_checked(stop, false), deadline(q), "stop"))
         return;
       network::Machine& m = q.machine();
       const std::vector<int> path{c_.nodes.l1, c_.nodes.e[std::size_t(e)]};

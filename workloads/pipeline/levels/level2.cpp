@@ -1,8 +1,5 @@
 #include "workloads/pipeline/levels/level2.hpp"
 
-#include <any>
-
-#include "network/reliable.hpp"
 #include "workloads/pipeline/relay.hpp"
 
 namespace workloads::levels {
@@ -106,29 +103,28 @@ void Level2<T>::eliminate_buffered(t800sim::Process& p, const PacketValue& pivot
 // not take within the timeout is given up (level 3 asks for the row again), so the processor
 // always comes back to take what L1 sends.
 template <class T>
-void Level2<T>::checked(Process& p) {
-  using CheckedPivot = typename M::CheckedPivot;
+void Level2<T>::checked(t800sim::Process& p) {
   using CheckedRow = typename M::CheckedRow;
   const bool growth_check = c_.settings.rule.growth_check();
-  auto send = [&](t800::Message m) {
-    network::out_or_fail(p, out(), std::move(m), p.now_us() + c_.settings.timeout_us);
+  auto send = [&](const typename M::CheckedValue& v, const std::string& label) {
+    p.out_or_fail(c_.checked_out(&out()), v, p.now_us() + c_.settings.timeout_us, label);
   };
   // L1 may give up a message half-way (this processor was slow, or a fault): each message says
   // what it is, so a pivot row may come where a row was due.
-  CheckedPivot pivot;
+  typename M::CheckedPivot pivot;
   bool pivot_intact = false;
   for (;;) {
-    t800::Message m = p.in(in());
-    if (const auto* next = std::any_cast<CheckedPivot>(&m.payload)) {
-      pivot = *next;
+    const typename M::CheckedValue m = p.in(c_.checked_in(&in()));
+    if (M::is_pivot(m)) {
+      pivot = M::checked_pivot_of(m, growth_check);
       if (pivot.stop) return;
       c_.report.level2(p.now_us(), true);
       c_.charge_checksum(p, pivot.row.size() + 1);
       pivot_intact = pivot.sum() == pivot.checksum;
-      if (pivot.forward) send(message(pivot, pivot.bytes(growth_check), "pivot row"));
+      if (pivot.forward) send(M::to_checked(pivot, growth_check), "pivot row");
       continue;
     }
-    const auto& row = std::any_cast<const CheckedRow&>(m.payload);
+    const CheckedRow row = M::checked_row_of(m);
     c_.charge_checksum(p, row.values.size());
     CheckedRow done{row.step, row.index, true, {}, 0};
     if (pivot_intact && row.step == pivot.step && row.sum() == row.checksum) {
@@ -139,7 +135,7 @@ void Level2<T>::checked(Process& p) {
       c_.charge_checksum(p, done.values.size());
     }
     done.checksum = done.sum();
-    send(message(done, "row"));
+    send(M::to_checked(done), "row");
     c_.report.level2(p.now_us(), false);
   }
 }

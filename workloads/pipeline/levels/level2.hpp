@@ -20,7 +20,7 @@ class Level2 {
   // One system; false when the pipeline stops. A process of the SDK: typed channels, packets.
   bool round(t800sim::Process& p);
   // Recovery: every system until L1's stop.
-  void checked(Process& p);
+  void checked(t800sim::Process& p);
 
  private:
   using M = Messages<T>;

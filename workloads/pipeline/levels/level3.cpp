@@ -1,13 +1,11 @@
 #include "workloads/pipeline/levels/level3.hpp"
 
 #include <algorithm>
-#include <any>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "network/alt.hpp"
-#include "network/reliable.hpp"
+#include "t800sim/alt.hpp"
 #include "workloads/pipeline/relay.hpp"
 
 namespace workloads::levels {
@@ -63,13 +61,12 @@ bool Level3<T>::return_reduced(Process& p, int k, Rows& rows, C bound, bool& uns
     c_.report.fail(k, Status::non_finite,
                    "level 3: a non-finite value in row " + std::to_string(check.row + 1) +
                        " of step " + std::to_string(k));
-    c_.send(p, c_.wiring.back, M::to_packet(typename M::ReturnedRow{false, {}}), kFailLabel);
+    send_back(p, typename M::ReturnedRow{false, {}}, kFailLabel);
     return false;
   }
   if (check.status == Status::unstable) unstable_at(k, unstable);
   for (std::size_t i = 0; i < rows.size(); ++i)
-    c_.send(p, c_.wiring.back, M::to_packet(typename M::ReturnedRow{true, std::move(rows[i]), i}),
-            "reduced row");
+    send_back(p, typename M::ReturnedRow{true, std::move(rows[i]), i}, "reduced row");
   return true;
 }
 
@@ -159,7 +156,6 @@ void Level3<T>::forward(Process& p, int k, elimination::Row<C>& row, std::size_t
 // strict steps. A step it cannot complete ends the pipeline (Status::lost).
 template <class T>
 bool Level3<T>::checked(Process& p) {
-  const Wiring& w = c_.wiring;
   lost_.assign(std::size_t(c_.shape.m), false);
   C bound = C(0);
   bool unstable = false;
@@ -174,7 +170,7 @@ bool Level3<T>::checked(Process& p) {
               std::to_string(c_.shape.m + 1) +
               " requests in a row to resend them (a fault no other level-2 processor could get "
               "round, or workload.recovery_timeout_us shorter than the pipeline's own pauses)");
-      c_.send(p, w.back, M::to_packet(typename M::ReturnedRow{false, {}}), kFailLabel);
+      send_back(p, typename M::ReturnedRow{false, {}}, kFailLabel);
       to_l4(p, k, Pivot::stop(false), kFailLabel);
       return false;
     }
@@ -188,8 +184,7 @@ bool Level3<T>::checked(Process& p) {
       return false;
     }
   }
-  c_.send(p, w.back, M::to_packet(typename M::ReturnedRow{true, {}, 0}),
-          "done");  // no more resends
+  send_back(p, typename M::ReturnedRow{true, {}, 0}, "done");  // no more resends
   return true;
 }
 
@@ -213,7 +208,11 @@ bool Level3<T>::collect_checked(Process& p, int k, CheckedPivot& pivot, Rows& ro
       receive_step(q, k, pivot, rows, have, damaged, first_wait_us);
     };
     if (request) {
-      par(p, {[&](Process& q) { q.out(*c_.wiring.back, message(*request, "resend")); }, receive});
+      par(p, {[&](Process& q) {
+                t800sim::Process(q).out(c_.checked_out(c_.wiring.back), M::to_checked(*request),
+                                        "resend");
+              },
+              receive});
     } else {
       receive(p);
     }
@@ -242,9 +241,9 @@ bool Level3<T>::collect_checked(Process& p, int k, CheckedPivot& pivot, Rows& ro
   }
 }
 
-// Level 3's ALT over the level-2 processors it still listens to, with a timer guard that ends the
-// wait settings.timeout_us after the last message (first_wait_us after the start); a message that
-// stops half-way (InputOrFail) is given up with its processor.
+// Level 3's ALT (the SDK's) over the level-2 processors it still listens to, with a timer guard
+// that ends the wait settings.timeout_us after the last message (first_wait_us after the start); a
+// message that stops half-way (an InputOrFail guard) is given up with its processor.
 template <class T>
 void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
                              std::vector<bool>& have, std::vector<int>& damaged,
@@ -254,34 +253,36 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
   const int m = c_.shape.m;
   const auto ticks = std::int64_t(std::ceil(c_.settings.timeout_us / p.tick_us()));
   std::int64_t after = p.clock() + std::int64_t(std::ceil(first_wait_us / p.tick_us()));
+  t800sim::Process sdk(p);
   while (std::find(have.begin(), have.end(), false) != have.end()) {
-    std::vector<network::Guard> guards;
+    t800sim::Alt alt(sdk);
+    std::optional<typename M::CheckedValue> received;
     for (int e = 0; e < m; ++e)
-      guards.push_back(
-          {network::Guard::Kind::input, e_out[std::size_t(e)], 0, !lost_[std::size_t(e)]});
-    guards.push_back({network::Guard::Kind::timer, nullptr, after, true});
-    const int g = network::alternate(p, guards);
+      alt.input_or_fail(
+          c_.checked_in(e_out[std::size_t(e)]), longest_message_us_,
+          [&received](std::optional<typename M::CheckedValue> v) { received = std::move(v); },
+          !lost_[std::size_t(e)]);
+    alt.after(after, [] {});
+    const int g = alt.select();
     if (g == m) return;  // the timer: nothing more is coming
-    // A message that has started arrives within its time on the wire, unless a fault stops it.
-    auto received =
-        network::in_or_fail(p, *e_out[std::size_t(g)], p.now_us() + longest_message_us_);
     if (!received) {
       lost_[std::size_t(g)] = true;
       continue;
     }
     after = p.clock() + ticks;
-    if (const auto* piv = std::any_cast<CheckedPivot>(&received->payload)) {
-      if (piv->step != k) continue;  // a late message of an earlier step
-      c_.charge_checksum(p, piv->row.size() + 1);
-      if (piv->sum() != piv->checksum) {
+    if (M::is_pivot(*received)) {
+      const CheckedPivot piv = M::checked_pivot_of(*received, c_.settings.rule.growth_check());
+      if (piv.stop || piv.step != k) continue;  // a late message of an earlier step
+      c_.charge_checksum(p, piv.row.size() + 1);
+      if (piv.sum() != piv.checksum) {
         damaged.push_back(g);
         continue;
       }
-      pivot = *piv;
+      pivot = piv;
       have[0] = true;
       continue;
     }
-    const auto& row = std::any_cast<const CheckedRow&>(received->payload);
+    const CheckedRow row = M::checked_row_of(*received);
     if (row.step != k) continue;
     c_.charge_checksum(p, row.values.size());
     if (row.bad || row.sum() != row.checksum || row.index < 1 || row.index > rows.size()) {
@@ -291,6 +292,16 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
     rows[row.index - 1] = row.values;
     have[row.index] = true;
   }
+}
+
+// A reduced row (or a failed step's word, or recovery's "done") to L1: a packet, or with recovery
+// a checked packet (the channel also carries L3's resend requests).
+template <class T>
+void Level3<T>::send_back(Process& p, const typename M::ReturnedRow& row, const char* label) const {
+  if (c_.settings.recovery)
+    t800sim::Process(p).out(c_.checked_out(c_.wiring.back), M::to_checked(row), label);
+  else
+    c_.send(p, c_.wiring.back, M::to_packet(row), label);
 }
 
 template <class T>

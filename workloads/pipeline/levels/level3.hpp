@@ -40,6 +40,7 @@ class Level3 {
   // A step's check found the growth above the limit: the first time, it is reported.
   void unstable_at(int k, bool& unstable);
   std::vector<int> path_through(int e) const;
+  void send_back(Process& p, const typename M::ReturnedRow& row, const char* label) const;
   // Step k's pivot row (a row of U), or a stop, to L4 over its typed channel.
   void to_l4(Process& p, int k, const Pivot& pivot, const char* label) const;
 

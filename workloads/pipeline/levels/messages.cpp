@@ -1,53 +1,112 @@
 #include "workloads/pipeline/levels/messages.hpp"
 
-#include "t800/payload_bytes.hpp"
-
 namespace workloads::levels {
 
-// Recovery's messages: the header word, the REALs (little-endian words, as the T800 stores them),
-// the checksum. (Packets say their own, t800sim/protocol.hpp.)
+namespace {
+std::vector<t800sim::INT> words(std::initializer_list<std::uint32_t> values) {
+  std::vector<t800sim::INT> out;
+  for (std::uint32_t v : values) out.push_back(t800sim::INT(v));
+  return out;
+}
+template <class Number>
+void append(std::vector<t800sim::INT>& out, const std::vector<Number>& values) {
+  for (Number v : values) out.push_back(t800sim::INT(v));
+}
+std::uint32_t header_of(std::int32_t word) {
+  return std::uint32_t(word);
+}
+}  // namespace
+
 template <class T>
-void Messages<T>::register_faults() {
-  using t800::flip_byte;
-  constexpr std::int64_t size = sizeof(T);
-  auto flip_reals = [](Row& values, std::int64_t byte, std::uint8_t mask) {
-    const std::size_t i = std::size_t(byte / size);
-    if (i >= values.size()) return false;
-    values[i] = C(flip_byte(values[i].value(), byte % size, mask));
-    return true;
-  };
-  t800::register_payload_bytes(
-      typeid(CheckedRow), [=](std::any& a, std::int64_t b, std::uint8_t x) {
-        auto& m = std::any_cast<CheckedRow&>(a);
-        const std::int64_t end = kHeaderBytes + size * std::int64_t(m.values.size());
-        if (b < kHeaderBytes) {
-          const std::uint32_t header = flip_byte(m.header(), b, x);
-          m.step = int(header / 256);
-          m.index = header % 256;
-        } else if (b < end) {
-          flip_reals(m.values, b - kHeaderBytes, x);
-        } else {
-          m.checksum = flip_byte(m.checksum, b - end, x);
-        }
-        return true;
-      });
-  t800::register_payload_bytes(
-      typeid(CheckedPivot), [=](std::any& a, std::int64_t b, std::uint8_t x) {
-        auto& m = std::any_cast<CheckedPivot&>(a);
-        const std::int64_t reals_end = kHeaderBytes + size * std::int64_t(m.row.size());
-        if (b < kHeaderBytes) {
-          m.step = int(flip_byte(m.header(), b, x));
-        } else if (b < reals_end) {
-          flip_reals(m.row, b - kHeaderBytes, x);
-        } else if (m.step == 0 && b < reals_end + size) {
-          m.scale = C(flip_byte(m.scale.value(), b - reals_end, x));
-        } else {
-          const std::int64_t at = b - reals_end - (m.step == 0 ? size : 0);
-          if (at < 0 || at >= 4) return false;
-          m.checksum = flip_byte(m.checksum, at, x);
-        }
-        return true;
-      });
+auto Messages<T>::to_checked(const CheckedPivot& pivot, bool growth_check) -> CheckedValue {
+  if (pivot.stop) return {header::kStop, {}, {}};
+  Row values = pivot.row;
+  if (pivot.step == 0 && growth_check) values.push_back(pivot.scale);
+  const std::uint32_t h = checked_header::kPivotRow | std::uint32_t(pivot.step) |
+                          (pivot.forward ? checked_header::kForward : 0u);
+  return {std::int32_t(h), std::get<1>(packet(0, values)), words({pivot.checksum})};
+}
+
+template <class T>
+auto Messages<T>::to_checked(const CheckedRow& row) -> CheckedValue {
+  return {std::int32_t(row.header()), std::get<1>(packet(0, row.values)), words({row.checksum})};
+}
+
+template <class T>
+auto Messages<T>::to_checked(const ReturnedRow& row) -> CheckedValue {
+  PacketValue p = to_packet(row);
+  return {std::get<0>(p), std::move(std::get<1>(p)), {}};
+}
+
+template <class T>
+auto Messages<T>::to_checked(const Resend& request) -> CheckedValue {
+  const std::uint32_t h = checked_header::kResend | std::uint32_t(request.rows.size()) |
+                          std::uint32_t(request.lost.size()) << 8 |
+                          std::uint32_t(request.avoid.size()) << 16;
+  std::vector<t800sim::INT> lists;
+  append(lists, request.rows);
+  append(lists, request.lost);
+  append(lists, request.avoid);
+  return {std::int32_t(h), {}, std::move(lists)};
+}
+
+template <class T>
+bool Messages<T>::is_pivot(const CheckedValue& v) {
+  return header_of(std::get<0>(v)) & (checked_header::kPivotRow | std::uint32_t(header::kStop));
+}
+
+template <class T>
+bool Messages<T>::is_resend(const CheckedValue& v) {
+  return header_of(std::get<0>(v)) & checked_header::kResend;
+}
+
+template <class T>
+auto Messages<T>::checked_pivot_of(const CheckedValue& v, bool growth_check) -> CheckedPivot {
+  const std::uint32_t h = header_of(std::get<0>(v));
+  CheckedPivot pivot;
+  if (h & std::uint32_t(header::kStop)) {
+    pivot.stop = true;
+    return pivot;
+  }
+  pivot.step = int(h & checked_header::kNumber);
+  pivot.forward = h & checked_header::kForward;
+  pivot.row = Row(std::get<1>(v).begin(), std::get<1>(v).end());
+  if (pivot.step == 0 && growth_check && !pivot.row.empty()) {
+    pivot.scale = pivot.row.back();
+    pivot.row.pop_back();
+  }
+  if (!std::get<2>(v).empty()) pivot.checksum = std::uint32_t(std::get<2>(v).front());
+  return pivot;
+}
+
+template <class T>
+auto Messages<T>::checked_row_of(const CheckedValue& v) -> CheckedRow {
+  const std::uint32_t h = header_of(std::get<0>(v));
+  CheckedRow row;
+  row.step = int((h & checked_header::kNumber) / 256);
+  row.index = (h & checked_header::kNumber) % 256;
+  row.bad = h & checked_header::kDamaged;
+  row.values = Row(std::get<1>(v).begin(), std::get<1>(v).end());
+  if (!std::get<2>(v).empty()) row.checksum = std::uint32_t(std::get<2>(v).front());
+  return row;
+}
+
+template <class T>
+auto Messages<T>::returned_row_of(const CheckedValue& v) -> ReturnedRow {
+  return returned_row_of(PacketValue{std::get<0>(v), std::get<1>(v)});
+}
+
+template <class T>
+auto Messages<T>::resend_of(const CheckedValue& v) -> Resend {
+  const std::uint32_t h = header_of(std::get<0>(v));
+  const std::vector<t800sim::INT>& lists = std::get<2>(v);
+  const std::size_t rows = h & 0xff, lost = (h >> 8) & 0xff, avoid = (h >> 16) & 0xff;
+  Resend request;
+  if (rows + lost + avoid != lists.size()) return request;  // a damaged request: nothing to resend
+  for (std::size_t i = 0; i < rows; ++i) request.rows.push_back(std::size_t(lists[i]));
+  for (std::size_t i = 0; i < lost; ++i) request.lost.push_back(lists[rows + i]);
+  for (std::size_t i = 0; i < avoid; ++i) request.avoid.push_back(lists[rows + lost + i]);
+  return request;
 }
 
 template struct Messages<float>;

@@ -2,9 +2,9 @@
 // it takes on the wire follow from the value, as occam's counted protocols' do: one INT32 header
 // word (a row's number, a step, status flags) and the REALs (REAL32 for float, REAL64 for double),
 // with recovery's messages a checksum word after them (checksum.hpp). Strict and overlapped steps'
-// messages travel as a Packet over the SDK's typed channels (Packed<INT, Block<REAL>>, its bytes
-// from the protocol); recovery's and the client's system still as the simulator's messages, which
-// message() makes with their bytes, so no call site writes a byte count.
+// messages travel as a Packet over the SDK's typed channels (Packed<INT, Block<REAL>>), recovery's
+// as a Checked packet (Packed<INT, Block<REAL>, Block<INT>>), their bytes from the protocol; the
+// client's system still as the simulator's message, with its bytes from bytes().
 #pragma once
 
 #include <any>
@@ -24,7 +24,6 @@ namespace workloads::levels {
 
 // One INT32 word in front of every row or matrix: the row's number (or the step) and a status flag.
 constexpr std::int64_t kHeaderBytes = 4;
-constexpr std::int64_t kChecksumBytes = 4;
 
 // The header word of a packet (Messages::Packet): a number (a row's, or a step) in the low bits,
 // status flags in the high ones, as the occam program's header word has them. A stop ends the
@@ -39,15 +38,23 @@ constexpr std::int32_t kScale =
 constexpr std::int32_t kNumber = kScale - 1;
 }  // namespace header
 
+// The header word of a recovery message (Messages::Checked). A row: step * 256 + its number, and
+// kDamaged when its level-2 processor found its input damaged. A pivot row: kPivotRow | the step,
+// kForward for the level-2 processor that passes it on to L3. A stop: header::kStop. L3's resend
+// request: kResend and the lengths of its three lists, a byte each.
+namespace checked_header {
+constexpr std::uint32_t kForward = 1u << 26;
+constexpr std::uint32_t kPivotRow = 1u << 27;
+constexpr std::uint32_t kResend = 1u << 28;
+constexpr std::uint32_t kDamaged = 1u << 31;
+constexpr std::uint32_t kNumber = kForward - 1;
+}  // namespace checked_header
+
 template <class T>
 struct Messages {
   using C = dynamics::Counted<T>;
   using Row = elimination::Row<C>;
   static constexpr std::int64_t kReal = sizeof(T);  // REAL32 or REAL64
-
-  static std::int64_t reals(std::size_t count) {
-    return kHeaderBytes + kReal * static_cast<std::int64_t>(count);
-  }
 
   // The client's system (its REALs, no header), or nullopt: finish (a header word).
   using Input = std::optional<elimination::LinearSystem<C>>;
@@ -147,24 +154,21 @@ struct Messages {
   }
 
   // Recovery's messages (PipelineSettings::recovery): each carries the step it belongs to and a
-  // checksum of its header word and REALs.
+  // checksum of its header word and REALs. On the wire every one is a Checked packet: the header
+  // word (checked_header), the REALs, and INT words -- the checksum, or a resend's lists, their
+  // lengths in the header word; a stop is the header word alone.
+  using Checked = t800sim::Packed<t800sim::INT, t800sim::Block<T>, t800sim::Block<t800sim::INT>>;
+  using CheckedValue = t800sim::value_of<Checked>;
+
   struct CheckedPivot {
     int step = 0;
-    bool stop = false;     // the level-2 processor ends (a header word)
+    bool stop = false;     // the level-2 processor ends
     bool forward = false;  // it passes the pivot row on to L3
     Row row;
-    C scale = C(0);
+    C scale = C(0);  // travels at step 0 when the growth check needs it; zero otherwise
     std::uint32_t checksum = 0;
-    std::uint32_t header() const { return std::uint32_t(step); }
-    // The scale travels at step 0 when the growth check needs it (read from the step, as the
-    // receiver reads it).
-    std::int64_t bytes(bool growth_check) const {
-      if (stop) return kHeaderBytes;
-      const std::size_t extra = step == 0 && growth_check ? 1 : 0;
-      return reals(row.size() + extra) + kChecksumBytes;
-    }
     std::uint32_t sum() const {
-      std::uint32_t s = workloads::checksum(header(), row);
+      std::uint32_t s = workloads::checksum(std::uint32_t(step), row);
       add_words(s, scale.value());
       return s;
     }
@@ -175,33 +179,36 @@ struct Messages {
     bool bad = false;       // its level-2 processor found its input damaged
     Row values;
     std::uint32_t checksum = 0;
-    std::uint32_t header() const { return std::uint32_t(step * 256 + int(index)); }
-    std::int64_t bytes() const { return reals(values.size()) + kChecksumBytes; }
-    std::uint32_t sum() const {
-      return workloads::checksum(header() + (bad ? 0x80000000u : 0u), values);
+    std::uint32_t header() const {
+      return std::uint32_t(step * 256 + int(index)) | (bad ? checked_header::kDamaged : 0u);
     }
+    std::uint32_t sum() const { return workloads::checksum(header(), values); }
   };
   // L3 to L1: resend these rows of the step (0: the pivot row) through other level-2 processors;
-  // a word each, and a count.
+  // a word each.
   struct Resend {
     std::vector<std::size_t> rows;
     std::vector<int> lost;   // level-2 processors (0-based) L3 gave up on
     std::vector<int> avoid;  // and those whose rows arrived damaged
-    std::int64_t bytes() const {
-      return 4 * (std::int64_t(rows.size() + lost.size() + avoid.size()) + 1);
-    }
   };
 
-  // How each message's value changes when a byte of it arrives changed (a corrupting link fault).
-  static void register_faults();
+  // L1 -> level 2 -> L3. The scale is the pivot row's last REAL when it travels (step 0 with the
+  // growth check: the receiver reads it from the step).
+  static CheckedValue to_checked(const CheckedPivot& pivot, bool growth_check);
+  static CheckedValue to_checked(const CheckedRow& row);
+  // L3 -> L1: a returned row (its packet's header and REALs), or a resend request.
+  static CheckedValue to_checked(const ReturnedRow& row);
+  static CheckedValue to_checked(const Resend& request);
+  // What a checked packet holds, by its header word.
+  static bool is_pivot(const CheckedValue& v);
+  static bool is_resend(const CheckedValue& v);
+  static CheckedPivot checked_pivot_of(const CheckedValue& v, bool growth_check);
+  static CheckedRow checked_row_of(const CheckedValue& v);
+  static ReturnedRow returned_row_of(const CheckedValue& v);
+  static Resend resend_of(const CheckedValue& v);
 };
 
-// The simulator's message carrying `m`, its bytes from its protocol.
-template <class M>
-t800::Message message(M m, const std::string& label) {
-  const std::int64_t bytes = m.bytes();
-  return {bytes, std::move(m), label};
-}
+// The simulator's message carrying the client's system.
 template <class M>
 t800::Message message(M m, std::int64_t bytes, const std::string& label) {
   return {bytes, std::move(m), label};
