@@ -63,9 +63,7 @@ detail::ChannelSlot* Builder::declare(const std::string& name, const std::string
 detail::ChannelSlot* Builder::end(const std::string& name, const std::string& protocol,
                                   const std::string& process, bool writer) {
   if (name.empty()) throw std::invalid_argument("a channel needs a name");
-  detail::ChannelSlot* slot = nullptr;
-  for (detail::ChannelSlot& c : channels_)
-    if (c.name == name) slot = &c;
+  detail::ChannelSlot*& slot = channel_index_[name];
   if (!slot) {
     channels_.push_back({name, protocol, {}, {}, -1, 0, nullptr});
     slot = &channels_.back();

@@ -1,6 +1,7 @@
 #include "sdk/realise.hpp"
 
 #include <stdexcept>
+#include <unordered_map>
 
 #include "network/machine.hpp"
 
@@ -11,7 +12,9 @@ namespace {
 class Realisation {
  public:
   Realisation(const std::string& kind, Builder& builder, std::vector<PlacedProcess> placed)
-      : kind_(kind), builder_(builder), placed_(std::move(placed)) {}
+      : kind_(kind), builder_(builder), placed_(std::move(placed)) {
+    for (std::size_t i = 0; i < placed_.size(); ++i) index_.emplace(placed_[i].name, i);
+  }
 
   void join_channels(network::Machine& machine) {
     for (ChannelSlot& slot : builder_.declared_channels()) {
@@ -56,8 +59,7 @@ class Realisation {
 
  private:
   const PlacedProcess& placed(const std::string& process, const std::string& channel) const {
-    for (const PlacedProcess& p : placed_)
-      if (p.name == process) return p;
+    if (const auto at = index_.find(process); at != index_.end()) return placed_[at->second];
     std::string message = "workload " + kind_ + ": ";
     message += channel.empty() ? "code declared for process " + process
                                : "channel " + channel + " is joined to process " + process;
@@ -86,6 +88,7 @@ class Realisation {
   const std::string& kind_;
   Builder& builder_;
   std::vector<PlacedProcess> placed_;
+  std::unordered_map<std::string, std::size_t> index_;  // placed_ by process name (the first)
 };
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "t800sim/channel.hpp"
@@ -139,6 +140,8 @@ class Builder {
   Network network_;
   std::deque<ProcessDecl> processes_;         // stable addresses: declarations are returned
   std::deque<detail::ChannelSlot> channels_;  // stable addresses: handles point into it
+  // By name: a program of thousands of channels declares each end in constant time.
+  std::unordered_map<std::string, detail::ChannelSlot*> channel_index_;
   std::vector<DeclaredCode> code_;
   const network::Machine* machine_ = nullptr;
 };
