@@ -45,6 +45,8 @@ class Realisation {
   void spawn(network::Machine& machine) const {
     for (const PlacedProcess& p : placed_) {
       if (!p.decl->body) continue;
+      const std::vector<bool>& runs = p.decl->runs;
+      if (std::size_t(p.index) < runs.size() && !runs[std::size_t(p.index)]) continue;
       const auto priority = p.decl->high_priority ? t800::Priority::high : t800::Priority::low;
       const Process::IndexedBody& body = p.decl->body;
       const int index = p.index;

@@ -130,9 +130,11 @@ class Farm {
     plan_ = detail::plan_farm(b, master, worker_processors, tasks_, options_,
                               protocol<Shared>::bytes(typical), result_bytes());
     const int n = int(worker_processors.size());
-    b.processes("worker", n, [this](Process& p, int w) {
-       worker(p, std::size_t(w));
-     }).placed_on(worker_processors);
+    std::vector<bool> working;  // a worker with no tasks is not run (no thread for it)
+    for (int w = 0; w < n; ++w) working.push_back(has_work(std::size_t(w)));
+    b.processes("worker", n, [this](Process& p, int w) { worker(p, std::size_t(w)); })
+        .placed_on(worker_processors)
+        .running(working);
     for (int w = 0; w < n; ++w) {
       const std::string me = member(std::size_t(w));
       const std::string& at = worker_processors[std::size_t(w)];

@@ -73,6 +73,13 @@ struct ProcessDecl {
     high_priority = true;
     return *this;
   }
+  // A group member i with runs[i] false is declared (channels may name it, the scene may place it)
+  // but not run: a replicated PAR over the members that have work. Empty: every member runs.
+  std::vector<bool> runs;
+  ProcessDecl& running(std::vector<bool> members) {
+    runs = std::move(members);
+    return *this;
+  }
 };
 
 class Builder {

@@ -3,6 +3,8 @@
 // before anything runs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "network/config_error.hpp"
 #include "sdk_fixtures.hpp"
 #include "t800sim/workload.hpp"
@@ -165,3 +167,25 @@ TEST(SdkRegistration, AKindHasAtMostOnePrecision) {
                                            }}),
                std::invalid_argument);
 }
+
+namespace {
+
+// A group member marked not running is declared -- placed, and a channel may name it -- but its
+// body never runs: a replicated PAR over the members that have work.
+TEST(SdkProgram, AGroupMemberNotRunningIsDeclaredButNotRun) {
+  std::vector<int> ran;
+  auto* program = new sdk_test::Lambda([&](t800sim::Builder& b) {
+    const auto c = b.channel<t800sim::INT>("c", "sender", "member[1]");
+    b.process("sender", [](t800sim::Process&) {});
+    b.processes("member", 3, [&ran](t800sim::Process&, int i) { ran.push_back(i); })
+        .placed_on(std::vector<std::string>{"P1", "P2", "P3"})
+        .running({true, false, true});
+    (void)c;
+  });
+  const auto outcome = sdk_test::run(program, sdk_test::chain(3));
+  ASSERT_TRUE(outcome.blocked.empty());
+  std::sort(ran.begin(), ran.end());
+  EXPECT_EQ(ran, (std::vector<int>{0, 2}));
+}
+
+}  // namespace
