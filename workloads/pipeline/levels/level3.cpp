@@ -73,24 +73,31 @@ bool Level3<T>::return_reduced(Process& p, int k, Rows& rows, C bound, bool& uns
 // One step's rows from every level-2 processor (their order on the wire is known), while the
 // pivot row goes on to L4.
 template <class T>
-void Level3<T>::collect(Process& p, int k, Pivot& pivot, bool unstable, Rows& rows) {
+void Level3<T>::take_rows(std::vector<Process::Body>& branches, int k, Rows& rows,
+                          std::function<void(std::size_t)> arrived) {
   using RowMessage = typename M::RowMessage;
-  pivot.unstable = unstable;
-  std::vector<Process::Body> branches{[&](Process& q) { to_l4(q, k, pivot, "U row"); }};
-  std::vector<int> arrived(rows.size(), 0);
   for (const Port& port : c_.wiring.in_ports) {
     const std::vector<std::size_t> expected = relay_rows(c_.shape, port.served, k);
     if (expected.empty()) continue;
-    branches.push_back([this, &port, expected, &rows, &arrived](Process& q) {
+    branches.push_back([this, &port, expected, &rows, arrived](Process& q) {
       for (std::size_t count = expected.size(); count > 0; --count) {
         RowMessage row = M::row_message_of(c_.receive(q, port.channel));
         if (row.index < 1 || row.index > rows.size())
           q.stop("row number " + std::to_string(row.index) + " out of range");
         rows[row.index - 1] = std::move(row.values);
-        ++arrived[row.index - 1];
+        arrived(row.index - 1);
       }
     });
   }
+}
+
+template <class T>
+void Level3<T>::collect(Process& p, int k, Pivot& pivot, bool unstable, Rows& rows) {
+  using RowMessage = typename M::RowMessage;
+  pivot.unstable = unstable;
+  std::vector<Process::Body> branches{[&](Process& q) { to_l4(q, k, pivot, "U row"); }};
+  std::vector<int> arrived(rows.size(), 0);
+  take_rows(branches, k, rows, [&arrived](std::size_t i) { ++arrived[i]; });
   par(p, branches);
   for (int a : arrived)
     if (a != 1) throw std::logic_error("elimination pipeline: a row did not arrive exactly once");
@@ -109,20 +116,10 @@ void Level3<T>::stream(Process& p, int k, Pivot& pivot, C bound, bool& unstable)
     pivot.unstable = unstable;
     to_l4(q, k, pivot, "U row");
   }};
-  for (const Port& port : c_.wiring.in_ports) {
-    const std::vector<std::size_t> expected = relay_rows(c_.shape, port.served, k);
-    if (expected.empty()) continue;
-    branches.push_back([this, &port, expected, &rows, &ready](Process& q) {
-      for (std::size_t count = expected.size(); count > 0; --count) {
-        RowMessage row = M::row_message_of(c_.receive(q, port.channel));
-        if (row.index < 1 || row.index > rows.size())
-          q.stop("row number " + std::to_string(row.index) + " out of range");
-        rows[row.index - 1] = std::move(row.values);
-        ready.push_back(row.index - 1);
-        shared_.notify();
-      }
-    });
-  }
+  take_rows(branches, k, rows, [this, &ready](std::size_t i) {
+    ready.push_back(i);
+    shared_.notify();
+  });
   if (r > 0)
     branches.push_back([&](Process& q) {
       for (std::size_t sent = 0; sent < r; ++sent) {

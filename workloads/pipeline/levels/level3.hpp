@@ -5,6 +5,7 @@
 // asks L1 to resend what is missing or damaged.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -32,6 +33,10 @@ class Level3 {
 
   bool return_reduced(Process& p, int k, Rows& rows, C bound, bool& unstable);
   void collect(Process& p, int k, Pivot& pivot, bool unstable, Rows& rows);
+  // One branch per level-2 port with rows in step k: takes its rows, checks each row number, stores
+  // the row and tells `arrived` its index (0-based).
+  void take_rows(std::vector<Process::Body>& branches, int k, Rows& rows,
+                 std::function<void(std::size_t)> arrived);
   void stream(Process& p, int k, Pivot& pivot, C bound, bool& unstable);
   void forward(Process& p, int k, elimination::Row<C>& row, std::size_t i, C bound, bool& unstable);
   bool collect_checked(Process& p, int k, CheckedPivot& pivot, Rows& rows);
