@@ -21,6 +21,13 @@ std::vector<int> partners(int i, int count, int other, int rounds) {
   return out;
 }
 
+std::vector<int> joined(bool all, int i, int count, int other, int rounds) {
+  if (!all) return partners(i, count, other, rounds);
+  std::vector<int> every(static_cast<std::size_t>(other));
+  std::iota(every.begin(), every.end(), 0);
+  return every;
+}
+
 ProcessDecl& members(Builder& b, const std::string& name, int count, bool group,
                      Process::IndexedBody body) {
   if (group) return b.processes(name, count, std::move(body));

@@ -15,6 +15,14 @@
 // round-robin: member i works on rounds i, i + k, ...; the stages before and after it send to and
 // take from the member whose round it is, so items stay in order.
 //
+// A stage whose rounds are not one item in, one item out -- a stage that takes several items per
+// round, sends a round's items to chosen members of a group, or talks to a stage further on -- is
+// written as a process: process_stage / process_group give the body its ends (StageEnds: a channel
+// from every member of the stage before, one to every member of the stage after) and the body
+// serves its rounds itself, as an occam programmer would write that process. A channel back to an
+// earlier stage (a loop, like the elimination's reduced matrix returning to level 1) is an ordinary
+// channel the program declares between the two processes by their names (Builder::channel).
+//
 //   const auto pipe = t800sim::pipeline<REAL64>()
 //       .stage<REAL64>("square", [](Process& p, double x) { p.compute(500); return x * x; })
 //       .on("P1")
@@ -52,6 +60,9 @@ struct StageWiring {
   std::string before, after;
   int before_count = 1, after_count = 1;
   int rounds = 0;
+  // A process stage on either side of a boundary may talk to any member of the other: every pair
+  // is joined. Otherwise member i is joined to the members that share one of its rounds.
+  bool all_before = false, all_after = false;
 };
 
 // A declared stage, its types erased: declares its processes and its ends of the channels.
@@ -60,6 +71,7 @@ struct StageSpec {
   int count = 1;
   bool group = false;
   bool buffered = false;
+  bool process = false;  // written as a process (process_stage / process_group)
   std::vector<std::string> on;
   std::vector<Kernel> code;
   std::function<void(Builder&, const StageSpec&, const StageWiring&)> declare;
@@ -72,6 +84,8 @@ std::string link_name(const std::string& from, const std::string& to, int j, int
 // Member i of a stage of `count` talks to the members of a neighbour of `other` that share one of
 // its rounds: round r is on member r % count here and r % other there.
 std::vector<int> partners(int i, int count, int other, int rounds);
+// Member i's partners across one boundary: every member of the other side, or partners().
+std::vector<int> joined(bool all, int i, int count, int other, int rounds);
 // A stage's processes: a group name[0..count-1], or one process `name`.
 ProcessDecl& members(Builder& b, const std::string& name, int count, bool group,
                      Process::IndexedBody body);
@@ -89,7 +103,7 @@ template <class P>
 std::vector<In<P>> inputs_of(Builder& b, const StageWiring& w, const std::string& stage,
                              const std::string& process, bool group, int i, int count) {
   std::vector<In<P>> in(std::size_t(w.before_count));
-  for (int j : partners(i, count, w.before_count, w.rounds))
+  for (int j : joined(w.all_before, i, count, w.before_count, w.rounds))
     in[std::size_t(j)] = b.input<P>(link_name(w.before, stage, j, i), member(process, group, i));
   return in;
 }
@@ -97,14 +111,26 @@ template <class P>
 std::vector<Out<P>> outputs_of(Builder& b, const StageWiring& w, const std::string& stage,
                                const std::string& process, bool group, int i, int count) {
   std::vector<Out<P>> out(std::size_t(w.after_count));
-  for (int j : partners(i, count, w.after_count, w.rounds))
+  for (int j : joined(w.all_after, i, count, w.after_count, w.rounds))
     out[std::size_t(j)] = b.output<P>(link_name(stage, w.after, i, j), member(process, group, i));
   return out;
 }
 
 }  // namespace detail
 
-// The client's ends of a built pipeline: in(r) takes round r's item, out(r) gives its result.
+// What a process stage's body is given: its member index (0 for a stage of one process), the
+// rounds it serves, and its channels: from[j] from member j of the stage before (the feeder: one),
+// to[j] to member j of the stage after (the collector: one).
+template <class In_, class Out_>
+struct StageEnds {
+  int member = 0;
+  int rounds = 0;
+  std::vector<In<In_>> from;
+  std::vector<Out<Out_>> to;
+};
+
+// The client's ends of a built pipeline: in(r) takes round r's item, out(r) gives its result (the
+// member of the first / last stage whose round r is; of a process group, member r mod count).
 template <class In_, class Out_>
 class Pipeline {
  public:
@@ -130,10 +156,21 @@ class PipelineDecl {
   // A parallel stage of `count` processes, name[0..count-1], dealt the rounds round-robin.
   template <class Next, class F>
   PipelineDecl<First, Next> group(const std::string& name, int count, F f) && {
-    if (count < 1)
-      throw std::invalid_argument("pipeline stage " + name +
-                                  ": a group needs at least one process");
+    check_count(name, count);
     return std::move(*this).template add<Next>(name, count, true, std::move(f));
+  }
+  // A stage written as a process: body(process, ends) serves every round; `Next` is the protocol
+  // of what it sends on. The stages next to it are joined to it by every pair of members.
+  template <class Next, class Body>
+  PipelineDecl<First, Next> process_stage(const std::string& name, Body body) && {
+    return std::move(*this).template add_process<Next>(name, 1, false, std::move(body));
+  }
+  // A group of `count` processes name[0..count-1] written as processes: body(process, ends) with
+  // ends.member the member's index; which member gets which item is the bodies' business.
+  template <class Next, class Body>
+  PipelineDecl<First, Next> process_group(const std::string& name, int count, Body body) && {
+    check_count(name, count);
+    return std::move(*this).template add_process<Next>(name, count, true, std::move(body));
   }
   // The last stage's processors: one, or one per member of a group (a scene's [placement]
   // overrides them by the processes' names).
@@ -147,6 +184,9 @@ class PipelineDecl {
   // The last stage as input, worker and output processes in PAR, joined by one-item buffers:
   // name_input, name, name_output, on the same processor.
   PipelineDecl buffered() && {
+    if (last().process)
+      throw std::logic_error("pipeline stage " + last().name +
+                             ": a process stage buffers as its body does, not by buffered()");
     last().buffered = true;
     return std::move(*this);
   }
@@ -171,14 +211,19 @@ class PipelineDecl {
       const bool last_stage = s + 1 == stages_.size();
       w.after = last_stage ? collector : stages_[s + 1].name;
       w.after_count = last_stage ? 1 : stages_[s + 1].count;
+      w.all_before = stages_[s].process || (s > 0 && stages_[s - 1].process);
+      w.all_after = stages_[s].process || (!last_stage && stages_[s + 1].process);
       stages_[s].declare(b, stages_[s], w);
     }
     Pipeline<First, Last> ends;
     const detail::StageSpec &head = stages_.front(), &tail = stages_.back();
-    // Members beyond the rounds' number take nothing: no channel to them.
-    for (int i = 0; i < std::min(head.count, rounds); ++i)
+    // Members beyond the rounds' number take nothing: no channel to them (a process group's
+    // members are all joined: its body deals the rounds).
+    const int entries = head.process ? head.count : std::min(head.count, rounds);
+    const int exits = tail.process ? tail.count : std::min(tail.count, rounds);
+    for (int i = 0; i < entries; ++i)
       ends.entry_.push_back(b.output<First>(detail::link_name(feeder, head.name, 0, i), feeder));
-    for (int i = 0; i < std::min(tail.count, rounds); ++i)
+    for (int i = 0; i < exits; ++i)
       ends.exit_.push_back(b.input<Last>(detail::link_name(tail.name, collector, i, 0), collector));
     return ends;
   }
@@ -190,6 +235,41 @@ class PipelineDecl {
   detail::StageSpec& last() {
     if (stages_.empty()) throw std::logic_error("a pipeline's settings follow a stage");
     return stages_.back();
+  }
+
+  static void check_count(const std::string& name, int count) {
+    if (count < 1)
+      throw std::invalid_argument("pipeline stage " + name +
+                                  ": a group needs at least one process");
+  }
+
+  template <class Next, class Body>
+  PipelineDecl<First, Next> add_process(const std::string& name, int count, bool group,
+                                        Body body) && {
+    detail::StageSpec spec;
+    spec.name = name;
+    spec.count = count;
+    spec.group = group;
+    spec.process = true;
+    using Ends = StageEnds<Last, Next>;
+    using Work = std::function<void(Process&, const Ends&)>;
+    spec.declare = [work = Work(std::move(body))](Builder& b, const detail::StageSpec& s,
+                                                  const detail::StageWiring& w) {
+      std::vector<Ends> ends(std::size_t(s.count));
+      for (int i = 0; i < s.count; ++i) {
+        Ends& e = ends[std::size_t(i)];
+        e.member = i;
+        e.rounds = w.rounds;
+        e.from = detail::inputs_of<Last>(b, w, s.name, s.name, s.group, i, s.count);
+        e.to = detail::outputs_of<Next>(b, w, s.name, s.name, s.group, i, s.count);
+        for (const Kernel& k : s.code) b.code(detail::member(s.name, s.group, i), k);
+      }
+      ProcessDecl& d = detail::members(b, s.name, s.count, s.group,
+                                       [=](Process& p, int i) { work(p, ends[std::size_t(i)]); });
+      if (!s.on.empty()) d.placed_on(s.on);
+    };
+    stages_.push_back(std::move(spec));
+    return PipelineDecl<First, Next>(std::move(stages_));
   }
 
   template <class Next, class F>
