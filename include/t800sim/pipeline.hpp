@@ -42,6 +42,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <typeinfo>
 #include <utility>
 #include <vector>
 
@@ -49,6 +50,7 @@
 #include "t800sim/kernel.hpp"
 #include "t800sim/process.hpp"
 #include "t800sim/program.hpp"
+#include "t800sim/relay.hpp"
 
 namespace t800sim {
 
@@ -63,6 +65,9 @@ struct StageWiring {
   // A process stage on either side of a boundary may talk to any member of the other: every pair
   // is joined. Otherwise member i is joined to the members that share one of its rounds.
   bool all_before = false, all_after = false;
+  // Members reached through link processors (PipelineDecl::relayed): this stage's behind its own
+  // fan-out / fan-in, the stage after's behind its fan-out, the stage before's behind its fan-in.
+  std::vector<bool> via_fan_out, via_fan_in, after_via_fan_out, before_via_fan_in;
 };
 
 // A declared stage, its types erased: declares its processes and its ends of the channels.
@@ -75,7 +80,24 @@ struct StageSpec {
   std::vector<std::string> on;
   std::vector<Kernel> code;
   std::function<void(Builder&, const StageSpec&, const StageWiring&)> declare;
+  // Link processors (relayed): their processor names, and their declaration, typed.
+  const std::type_info* input = nullptr;  // the protocols in and out, for relayed()'s check
+  const std::type_info* output = nullptr;
+  std::string fan_out, fan_in;
+  std::function<void(Builder&, const StageSpec&, const StageWiring&)> declare_relays;
 };
+
+// The channel into member i of `stage` from member j of the stage before, and out of member i to
+// member j of the stage after: direct, or through a link processor's relay.
+std::string in_channel(const StageWiring& w, const std::string& stage, int j, int i);
+std::string out_channel(const StageWiring& w, const std::string& stage, int i, int j);
+std::string fan_out_name(const std::string& stage);
+std::string fan_in_name(const std::string& stage);
+// Which members of a stage on `members` (one per member) a stage on `neighbour` reaches only
+// through `relay`: no link to it, and the relay linked to both. Throws std::logic_error when a
+// processor is not in the network.
+std::vector<bool> behind(const Network& network, const std::string& neighbour,
+                         const std::string& relay, const std::vector<std::string>& members);
 
 // A member's process name: name[i] in a group, name for one process.
 std::string member(const std::string& name, bool group, int i);
@@ -104,7 +126,7 @@ std::vector<In<P>> inputs_of(Builder& b, const StageWiring& w, const std::string
                              const std::string& process, bool group, int i, int count) {
   std::vector<In<P>> in(std::size_t(w.before_count));
   for (int j : joined(w.all_before, i, count, w.before_count, w.rounds))
-    in[std::size_t(j)] = b.input<P>(link_name(w.before, stage, j, i), member(process, group, i));
+    in[std::size_t(j)] = b.input<P>(in_channel(w, stage, j, i), member(process, group, i));
   return in;
 }
 template <class P>
@@ -112,7 +134,7 @@ std::vector<Out<P>> outputs_of(Builder& b, const StageWiring& w, const std::stri
                                const std::string& process, bool group, int i, int count) {
   std::vector<Out<P>> out(std::size_t(w.after_count));
   for (int j : joined(w.all_after, i, count, w.after_count, w.rounds))
-    out[std::size_t(j)] = b.output<P>(link_name(stage, w.after, i, j), member(process, group, i));
+    out[std::size_t(j)] = b.output<P>(out_channel(w, stage, i, j), member(process, group, i));
   return out;
 }
 
@@ -127,6 +149,32 @@ struct StageEnds {
   int rounds = 0;
   std::vector<In<In_>> from;
   std::vector<Out<Out_>> to;
+
+  // A channel and the members of the neighbouring stage it joins this one to: one each, or the
+  // members behind one relay (relayed), which share it -- a message for several of them is sent
+  // once on it, the relay copies it.
+  template <class End>
+  struct Port {
+    End channel;
+    std::vector<int> members;
+  };
+  std::vector<Port<Out<Out_>>> to_ports() const { return ports(to); }
+  std::vector<Port<In<In_>>> from_ports() const { return ports(from); }
+
+ private:
+  template <class End>
+  static std::vector<Port<End>> ports(const std::vector<End>& ends) {
+    std::vector<Port<End>> out;
+    for (std::size_t j = 0; j < ends.size(); ++j) {
+      if (!ends[j].slot()) continue;
+      auto same = std::find_if(out.begin(), out.end(), [&](const Port<End>& p) {
+        return p.channel.slot() == ends[j].slot();
+      });
+      if (same == out.end()) same = out.insert(out.end(), Port<End>{ends[j], {}});
+      same->members.push_back(int(j));
+    }
+    return out;
+  }
 };
 
 // The client's ends of a built pipeline: in(r) takes round r's item, out(r) gives its result (the
@@ -172,6 +220,46 @@ class PipelineDecl {
     check_count(name, count);
     return std::move(*this).template add_process<Next>(name, count, true, std::move(body));
   }
+  // The last stage (a process group) reaches the stage before through the link processor
+  // plan.fan_out and the stage after through plan.fan_in where it has no link of its own to them
+  // (t800sim/relay.hpp): which members go through them follows from the stages' processors (on(),
+  // which the neighbours need too) and the network's links. The bodies are unchanged: a member's
+  // ends are the relay's channels, and members behind one relay share the neighbour's channel to
+  // it -- the neighbour sends each message once on it, in the plan's order.
+  template <class In_>
+  PipelineDecl relayed(RelayPlan<In_, Last> plan) && {
+    detail::StageSpec& s = last();
+    if (!s.process || !s.group)
+      throw std::logic_error("pipeline stage " + s.name + ": only a process group is relayed");
+    if (*s.input != typeid(value_of<In_>))
+      throw std::logic_error("pipeline stage " + s.name +
+                             ": the relay plan's input protocol is not the stage's");
+    s.fan_out = plan.fan_out;
+    s.fan_in = plan.fan_in;
+    s.declare_relays = [plan](Builder& b, const detail::StageSpec& stage,
+                              const detail::StageWiring& w) {
+      std::vector<int> out_served, in_served;
+      std::vector<std::string> to, from;
+      for (int e = 0; e < stage.count; ++e) {
+        if (w.via_fan_out[std::size_t(e)]) {
+          out_served.push_back(e);
+          to.push_back(detail::in_channel(w, stage.name, 0, e));
+        }
+        if (w.via_fan_in[std::size_t(e)]) {
+          in_served.push_back(e);
+          from.push_back(detail::out_channel(w, stage.name, e, 0));
+        }
+      }
+      const std::string fo = detail::fan_out_name(stage.name), fi = detail::fan_in_name(stage.name);
+      if (!out_served.empty())
+        declare_fan_out(b, fo, plan.fan_out, plan, out_served,
+                        detail::link_name(w.before, fo, 0, 0), to);
+      if (!in_served.empty())
+        declare_fan_in(b, fi, plan.fan_in, plan, in_served, from,
+                       detail::link_name(fi, w.after, 0, 0));
+    };
+    return std::move(*this);
+  }
   // The last stage's processors: one, or one per member of a group (a scene's [placement]
   // overrides them by the processes' names).
   PipelineDecl on(std::vector<std::string> processors) && {
@@ -203,8 +291,18 @@ class PipelineDecl {
                               int rounds) const {
     if (stages_.empty()) throw std::invalid_argument("a pipeline needs at least one stage");
     if (rounds < 0) throw std::invalid_argument("a pipeline serves zero or more rounds");
+    std::vector<std::vector<bool>> via_out, via_in;
+    for (std::size_t s = 0; s < stages_.size(); ++s) {
+      via_out.push_back(behind(b, s, -1, stages_[s].fan_out));
+      via_in.push_back(behind(b, s, +1, stages_[s].fan_in));
+    }
+    std::vector<detail::StageWiring> wiring;
     for (std::size_t s = 0; s < stages_.size(); ++s) {
       detail::StageWiring w;
+      w.via_fan_out = via_out[s];
+      w.via_fan_in = via_in[s];
+      w.before_via_fan_in = s == 0 ? std::vector<bool>(1, false) : via_in[s - 1];
+      w.after_via_fan_out = s + 1 == stages_.size() ? std::vector<bool>(1, false) : via_out[s + 1];
       w.rounds = rounds;
       w.before = s == 0 ? feeder : stages_[s - 1].name;
       w.before_count = s == 0 ? 1 : stages_[s - 1].count;
@@ -214,7 +312,10 @@ class PipelineDecl {
       w.all_before = stages_[s].process || (s > 0 && stages_[s - 1].process);
       w.all_after = stages_[s].process || (!last_stage && stages_[s + 1].process);
       stages_[s].declare(b, stages_[s], w);
+      wiring.push_back(w);
     }
+    for (std::size_t s = 0; s < stages_.size(); ++s)
+      if (stages_[s].declare_relays) stages_[s].declare_relays(b, stages_[s], wiring[s]);
     Pipeline<First, Last> ends;
     const detail::StageSpec &head = stages_.front(), &tail = stages_.back();
     // Members beyond the rounds' number take nothing: no channel to them (a process group's
@@ -237,6 +338,21 @@ class PipelineDecl {
     return stages_.back();
   }
 
+  // Stage s's members behind its relay on the side `side` (-1: before, +1: after); all false when
+  // it has none there.
+  std::vector<bool> behind(Builder& b, std::size_t s, int side, const std::string& relay) const {
+    const detail::StageSpec& stage = stages_[s];
+    if (relay.empty()) return std::vector<bool>(std::size_t(stage.count), false);
+    const bool edge = side < 0 ? s == 0 : s + 1 == stages_.size();
+    const detail::StageSpec* neighbour = edge ? nullptr : &stages_[std::size_t(int(s) + side)];
+    if (!neighbour || neighbour->count != 1 || neighbour->on.empty() ||
+        stage.on.size() != std::size_t(stage.count))
+      throw std::logic_error("pipeline stage " + stage.name + ": a relay through " + relay +
+                             " needs a stage of one process " + (side < 0 ? "before" : "after") +
+                             " it, and on() for both (one processor per member)");
+    return detail::behind(b.network(), neighbour->on.front(), relay, stage.on);
+  }
+
   static void check_count(const std::string& name, int count) {
     if (count < 1)
       throw std::invalid_argument("pipeline stage " + name +
@@ -251,6 +367,8 @@ class PipelineDecl {
     spec.count = count;
     spec.group = group;
     spec.process = true;
+    spec.input = &typeid(value_of<Last>);
+    spec.output = &typeid(value_of<Next>);
     using Ends = StageEnds<Last, Next>;
     using Work = std::function<void(Process&, const Ends&)>;
     spec.declare = [work = Work(std::move(body))](Builder& b, const detail::StageSpec& s,
