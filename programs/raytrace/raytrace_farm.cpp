@@ -7,9 +7,10 @@
 // On demand: each result is also a request. The master waits in one ALT over its workers' replies
 // and answers each with the next line, in the image's order -- it cannot know a line's cost before
 // the line is traced. Each worker holds two lines (the one it traces and one buffered ahead by its
-// feeder), so it never waits for work after sending a result. Workers that are not the master's
-// neighbours are reached through the simulator's routers: store-and-forward processes at high
-// priority on every transputer a message enters, as TN07's routers run beside its workers.
+// feeder), so it never waits for work after sending a result, and hands each result to a one-place
+// buffer, so it starts its next line while the result crosses the link. Workers that are not the
+// master's neighbours are reached through the simulator's routers: store-and-forward processes at
+// high priority on every transputer a message enters, as TN07's routers run beside its workers.
 #include <algorithm>
 
 #include "programs/support/checksum.hpp"
