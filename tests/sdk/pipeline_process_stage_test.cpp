@@ -222,7 +222,9 @@ TEST(PipelineProcessStages, MembersWithoutALinkAreReachedThroughTheRelays) {
   std::map<std::string, std::string> placed;
   for (const ProcessDecl& d : b.declared_processes()) {
     placed[d.name] = d.on.empty() ? "" : d.on.front();
-    if (d.name.rfind("work_fan_", 0) == 0) EXPECT_TRUE(d.high_priority) << d.name;
+    if (d.name.rfind("work_fan_", 0) == 0) {
+      EXPECT_TRUE(d.high_priority) << d.name;
+    }
   }
   for (const char* relay : {"work_fan_out", "work_fan_out_to2", "work_fan_out_to3"})
     EXPECT_EQ(placed[relay], "X") << relay;
