@@ -22,6 +22,9 @@
 // serves its rounds itself, as an occam programmer would write that process. A channel back to an
 // earlier stage (a loop, like the elimination's reduced matrix returning to level 1) is an ordinary
 // channel the program declares between the two processes by their names (Builder::channel).
+// Process stages may serve until a stop (build(..., kUntilStop): each body ends on the message it
+// recognises as one) and the last may keep its results (no collector), as the elimination's levels
+// serve a trajectory's solves, or keep Table 6's q̈ on level 4.
 //
 //   const auto pipe = t800sim::pipeline<REAL64>()
 //       .stage<REAL64>("square", [](Process& p, double x) { p.compute(500); return x * x; })

@@ -1,6 +1,6 @@
 // Counted elimination work -> the T800 operation mix the cost model prices (t800::CostModel).
-// The mapping of integer work onto instructions is a model assumption (U in docs/t800-timing.md
-// terms), stated once here, and it is the same for every level of the pipeline:
+// The mapping of integer work onto instructions is a model assumption (U in docs/t800-timing.md terms),
+// stated once here, and it is the same for every level of the pipeline:
 //   a piece of work      one occam PROC call (call + ret)
 //   a loop entered       4 simple instructions (ldc/stl of the index and of the count)
 //   a loop iteration     one lend

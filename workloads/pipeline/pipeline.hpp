@@ -26,7 +26,7 @@
 // Tp: from the moment L1 has received the system from the host until L4 has q̈ (the host link's
 // input time is reported apart as input_us). The topologies are configs/topologies/
 // elimination-m1..m5.toml; processors are found by name: L1, E1..Em, L3, L4 (X and Y, where
-// present, are link processors that run only the relays of relay.hpp).
+// present, are link processors that run only the SDK's relays, t800sim/relay.hpp).
 #pragma once
 
 #include <memory>
