@@ -206,7 +206,7 @@ void Machine::place_memory() {
   for (int node = 0; node < processors(); ++node) {
     t800::MemoryDemand demand;
     std::map<std::string, int> frame_words;  // per process: its largest frame
-    std::map<std::string, bool> code_seen;
+    std::map<std::string, std::size_t> code_index;  // a PROC's entry in demand.code
     std::map<std::string, int> array_bytes;
     std::vector<const t800::codegen::CodeUnit*> routines;
     const t800::ComputeModel& model = compute_models_[std::size_t(node)];
@@ -222,10 +222,14 @@ void Machine::place_memory() {
         }
       }
       frame_words[d.process] = std::max(frame_words[d.process], frame);
-      if (!code_seen[unit.name]) {
-        code_seen[unit.name] = true;
-        demand.code.push_back({unit.name, unit.code_bytes + unit.constant_bytes});
-      }
+      // Each PROC once, where it was first declared, as long as its longest recording: a recording
+      // holds the paths its run took, the PROC every path (a ray tracer's lines take different ones).
+      const int bytes = unit.code_bytes + unit.constant_bytes;
+      const auto [entry, first] = code_index.emplace(unit.name, demand.code.size());
+      if (first)
+        demand.code.push_back({unit.name, bytes});
+      else
+        demand.code[entry->second].bytes = std::max(demand.code[entry->second].bytes, bytes);
       // Arrays a PROC reaches through a pointer are its process's buffers (the message it
       // received, the results it sends): one of each name per process, as long as the longest.
       for (const t800::codegen::ArrayDecl& a : unit.arrays)
