@@ -48,7 +48,7 @@ Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, Proces
   for (int d = 0; d < 2; ++d) {
     dir_[d].activity.merge_gaps_below(
         data_packet_);  // a trace shows a streaming message as one interval
-    sc_core::sc_spawn([this, d] { wire_thread(d); }, role("wire", d).c_str());
+    spawn_method([this, d] { on_wire(d); }, dir_[d].wire_wake, "wire", d);
     spawn_method([this, d] { on_detect(d); }, dir_[d].detect_event, "detect", d);
     spawn_method([this, d] { on_ack_processed(d); }, dir_[d].process_event, "ackproc", d);
     spawn_method([this, d] { on_closed_form(d); }, dir_[d].closed_form.milestone, "closedform", d);
@@ -163,21 +163,51 @@ std::int64_t Link::dma_late(int e, const sc_time& t0) const {
 
 // ---- packet level ----
 
-void Link::wire_thread(int w) {
+void Link::on_wire(int w) {
+  finish_packet(w);
+  if (start_packet(w)) sc_core::next_trigger(dir_[w].wire_busy_until - sc_time_stamp());
+  // else: asleep until its wire_wake (the method's static sensitivity)
+}
+
+// The packet the wire was carrying has ended (the method was woken by its end).
+void Link::finish_packet(int w) {
+  Direction& own = dir_[w];
+  const WirePacket packet = own.carrying;
+  own.carrying = WirePacket::none;
+  switch (packet) {
+    case WirePacket::none:
+      return;
+    case WirePacket::data:
+      return finish_data_packet(w, own.packet_start);
+    case WirePacket::ack:
+      return finish_ack_packet(w, own.packet_start);
+    case WirePacket::in_flight:
+      return finish_in_flight(w);
+  }
+}
+
+// What the wire does next, in order of precedence; true when it now carries a packet.
+bool Link::start_packet(int w) {
   Direction& own = dir_[w];
   for (;;) {
     if (own.wire_stop.now()) {  // a dead wire carries nothing more
       if (!own.queue.empty() && own.wire_stop.hit)
         own.wire_stop.hit("message '" + own.queue.front().label + "' not sent");
-      sc_core::wait(own.wire_wake);
-      continue;
+      return false;
     }
     const bool data_waiting = !own.queue.empty() && own.may_send && !own.closed_form.active &&
                               own.sent < own.queue.front().bytes;
     if (own.in_flight.active) {
+      const InFlight& packet = own.in_flight;
+      const sc_time end = packet.start + (packet.data ? data_packet_ : ack_packet_);
+      if (end > sc_time_stamp()) {
+        carry(w, WirePacket::in_flight, packet.start, end - packet.start);
+        return true;
+      }
       finish_in_flight(w);
     } else if (own.acks_pending > 0) {
       send_ack_packet(w);
+      return true;
     } else if (data_waiting && own.sent == 0 && dir_[1 - w].closed_form.active &&
                fidelity_ == LinkFidelity::automatic) {
       hand_over(1 - w);  // this direction starts: the other's closed form no longer holds
@@ -185,10 +215,18 @@ void Link::wire_thread(int w) {
       start_closed_form(w);
     } else if (data_waiting) {
       send_data_packet(w);
+      return true;
     } else {
-      sc_core::wait(own.wire_wake);
+      return false;
     }
   }
+}
+
+void Link::carry(int w, WirePacket packet, const sc_time& start, const sc_time& length) {
+  Direction& own = dir_[w];
+  own.carrying = packet;
+  own.packet_start = start;
+  own.wire_busy_until = start + length;
 }
 
 void Link::send_data_packet(int di) {
@@ -207,9 +245,7 @@ void Link::send_data_packet(int di) {
   d.may_send = false;
   apply_byte_fault(di);
   if (!d.byte_lost) d.detect_event.notify(detect_delay_);
-  d.wire_busy_until = start + data_packet_;
-  sc_core::wait(data_packet_);
-  finish_data_packet(di, start);
+  carry(di, WirePacket::data, start, data_packet_);
 }
 
 void Link::finish_data_packet(int di, const sc_time& start) {
@@ -223,12 +259,8 @@ void Link::finish_data_packet(int di, const sc_time& start) {
 }
 
 void Link::send_ack_packet(int w) {
-  Direction& wire = dir_[w];
-  --wire.acks_pending;
-  const sc_time start = sc_time_stamp();
-  wire.wire_busy_until = start + ack_packet_;
-  sc_core::wait(ack_packet_);
-  finish_ack_packet(w, start);
+  --dir_[w].acks_pending;
+  carry(w, WirePacket::ack, sc_time_stamp(), ack_packet_);
 }
 
 void Link::finish_ack_packet(int w, const sc_time& start) {
@@ -254,8 +286,6 @@ void Link::finish_ack_packet(int w, const sc_time& start) {
 void Link::finish_in_flight(int w) {
   Direction& own = dir_[w];
   const InFlight packet = own.in_flight;
-  const sc_time end = packet.start + (packet.data ? data_packet_ : ack_packet_);
-  if (end > sc_time_stamp()) sc_core::wait(end - sc_time_stamp());
   own.in_flight.active = false;
   if (!packet.data) return finish_ack_packet(w, packet.start);
   if (!packet.recorded) own.activity.packet(packet.start, data_packet_, true);

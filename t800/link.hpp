@@ -159,6 +159,9 @@ class Link : public sc_core::sc_module {
     bool now() const { return armed && sc_core::sc_time_stamp() >= at; }
   };
 
+  // What a wire is carrying; its process is woken when the packet ends.
+  enum class WirePacket { none, data, ack, in_flight };
+
   // Every event and process of a link is named after its role and direction: SystemC would
   // otherwise generate a unique name for each (a search per name), a sixth of the set-up of a
   // 1024-transputer network.
@@ -183,6 +186,8 @@ class Link : public sc_core::sc_module {
     sc_core::sc_event delivered_event;
     // wire of this direction's data, and its pending acknowledges for the other direction
     int acks_pending = 0;
+    WirePacket carrying = WirePacket::none;  // until wire_busy_until
+    sc_core::sc_time packet_start;
     sc_core::sc_event wire_wake, detect_event, process_event;
     sc_core::sc_time wire_busy_until;  // end of the packet this wire carries
     InFlight in_flight;
@@ -195,7 +200,13 @@ class Link : public sc_core::sc_module {
     Stop wire_stop, deaf;
   };
 
-  void wire_thread(int wire);
+  // A wire is a method process (no stack of its own, no context switch per packet), woken by its
+  // wire_wake or by the end of the packet it carries.
+  void on_wire(int wire);
+  void finish_packet(int wire);
+  bool start_packet(int wire);  // false: nothing to send now
+  void carry(int wire, WirePacket packet, const sc_core::sc_time& start,
+             const sc_core::sc_time& length);
   void send_data_packet(int d);
   void finish_data_packet(int d, const sc_core::sc_time& start);
   void send_ack_packet(int wire);
