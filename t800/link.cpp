@@ -164,6 +164,11 @@ std::int64_t Link::dma_late(int e, const sc_time& t0) const {
 // ---- packet level ----
 
 void Link::on_wire(int w) {
+  const Direction& own = dir_[w];
+  if (own.carrying != WirePacket::none && sc_time_stamp() < own.wire_busy_until) {
+    // a packet started by start_at_once, and a wire_wake came before its end
+    return sc_core::next_trigger(own.wire_busy_until - sc_time_stamp());
+  }
   finish_packet(w);
   if (start_packet(w)) sc_core::next_trigger(dir_[w].wire_busy_until - sc_time_stamp());
   // else: asleep until its wire_wake (the method's static sensitivity)
@@ -220,6 +225,19 @@ bool Link::start_packet(int w) {
       return false;
     }
   }
+}
+
+// The wire's method, woken by wire_wake, would decide in the next delta at this instant. Deciding
+// now gives the same packet at the same time when nothing can change the decision in between: no
+// fault (a stop, a halted end), no resetch by a deadline, no packet handed over. The method is then
+// woken at the packet's end by a timed wire_wake (or earlier by another, and sleeps on).
+bool Link::start_at_once(int w) {
+  Direction& own = dir_[w];
+  if (faulted_ || deadline_waits_ > 0 || own.carrying != WirePacket::none || own.in_flight.active ||
+      dir_[1 - w].in_flight.active)
+    return false;
+  if (start_packet(w)) own.wire_wake.notify(own.wire_busy_until - sc_time_stamp());
+  return true;
 }
 
 void Link::carry(int w, WirePacket packet, const sc_time& start, const sc_time& length) {
@@ -303,16 +321,26 @@ void Link::on_detect(int di) {
   }
 }
 
+// An acknowledge goes before its wire's own data, so starting it at once is the decision the wire
+// would make in the next delta.
 void Link::queue_ack(int di) {
   Direction& reverse = dir_[1 - di];
   ++reverse.acks_pending;
-  reverse.wire_wake.notify(SC_ZERO_TIME);
+  if (!start_at_once(1 - di)) reverse.wire_wake.notify(SC_ZERO_TIME);
 }
 
+// The next byte of the message may go. Its wire also carries the other direction's acknowledges,
+// which go first: it is sent at once only when no acknowledge can be queued at this instant (the
+// other direction receives nothing, and a T800's acknowledge is detected before its byte has
+// arrived) and it is a byte of the same message (a new one may start in closed form).
 void Link::on_ack_processed(int di) {
-  if (dir_[di].wire_stop.now()) return;
-  dir_[di].may_send = true;
-  dir_[di].wire_wake.notify(SC_ZERO_TIME);
+  Direction& d = dir_[di];
+  if (d.wire_stop.now()) return;
+  d.may_send = true;
+  const Direction& other = dir_[1 - di];
+  const bool no_ack_can_come = !other.receiving && !other.closed_form.active &&
+                               !d.closed_form.active && detect_delay_ < data_packet_;
+  if (!(d.sent > 0 && no_ack_can_come && start_at_once(di))) d.wire_wake.notify(SC_ZERO_TIME);
 }
 
 void Link::on_byte_arrived(int di) {
@@ -625,27 +653,33 @@ void Link::apply_byte_fault(int di) {
 bool Link::transmit(int from, Message message, const sc_time& deadline) {
   Direction& d = dir_[from];
   const std::int64_t ticket = submit(from, std::move(message));
+  ++deadline_waits_;
   while (d.completed < ticket) {
     if (sc_time_stamp() >= deadline) {
       reset_output(from);
+      --deadline_waits_;
       return false;
     }
     sc_core::wait(deadline - sc_time_stamp(), d.sent_event);
   }
+  --deadline_waits_;
   return true;
 }
 
 std::optional<Message> Link::receive(int to, const sc_time& deadline) {
   const int di = 1 - to;
   Direction& d = dir_[di];
+  ++deadline_waits_;
   arm_input(di);
   while (d.delivered.empty()) {
     if (sc_time_stamp() >= deadline) {
       reset_input(di);
+      --deadline_waits_;
       return std::nullopt;
     }
     sc_core::wait(deadline - sc_time_stamp(), d.delivered_event);
   }
+  --deadline_waits_;
   Message m = std::move(d.delivered.front());
   d.delivered.pop_front();
   ++d.taken;

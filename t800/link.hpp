@@ -203,6 +203,9 @@ class Link : public sc_core::sc_module {
   // A wire is a method process (no stack of its own, no context switch per packet), woken by its
   // wire_wake or by the end of the packet it carries.
   void on_wire(int wire);
+  // Starts the wire's next packet at this very delta instead of waking its method for the next
+  // one, where nothing else can change what it starts (see link.cpp); false: woken as usual.
+  bool start_at_once(int wire);
   void finish_packet(int wire);
   bool start_packet(int wire);  // false: nothing to send now
   void carry(int wire, WirePacket packet, const sc_core::sc_time& start,
@@ -242,6 +245,7 @@ class Link : public sc_core::sc_module {
   void reset_output(int d);
   void reset_input(int d);
   bool faulted_ = false;
+  int deadline_waits_ = 0;  // OutputOrFail / InputOrFail waiting on this link
 
   LinkConfig config_;
   LinkFidelity fidelity_;
