@@ -126,8 +126,8 @@ bool Link::input_pending(int to) const {
   return d.submitted > d.taken;
 }
 
-void Link::DmaCount::add(std::int64_t n, const sc_time& at) {
-  if (queried && at == query_at && at == sc_time_stamp()) late += n;
+void Link::DmaCount::add(std::int64_t n, const sc_time& at, bool counted_first) {
+  if (!counted_first && queried && at == query_at && at == sc_time_stamp()) late += n;
   total += n;
   if (at > latest_at) {
     latest_at = at;
@@ -148,8 +148,10 @@ std::int64_t Link::dma_bytes(int e, bool including_now) const {
   std::int64_t n = including_now ? out.dma_sent.total + in.dma_received.total
                                  : out.dma_sent.before(now) + in.dma_received.before(now);
   if (now == SC_ZERO_TIME && !including_now) return n;
-  // Closed forms: the bytes started (sent) or arrived (received) by now, or strictly before now.
+  // Closed forms and a settled packet's byte: the bytes started (sent) or arrived (received) by
+  // now, or strictly before now.
   const sc_time until = including_now ? now : now - sc_core::sc_get_time_resolution();
+  if (in.arrival_pending && in.arrival_at <= until) ++n;
   if (out.closed_form.active && !out.closed_form.sender_done)
     n += bytes_started_by(out.closed_form, out.closed_form.bytes, until);
   if (in.closed_form.active && !in.closed_form.delivered && until >= data_packet_)
@@ -181,6 +183,8 @@ void Link::finish_packet(int w) {
   own.carrying = WirePacket::none;
   switch (packet) {
     case WirePacket::none:
+    case WirePacket::data_settled:
+    case WirePacket::ack_settled:
       return;
     case WirePacket::data:
       return finish_data_packet(w, own.packet_start);
@@ -211,16 +215,14 @@ bool Link::start_packet(int w) {
       }
       finish_in_flight(w);
     } else if (own.acks_pending > 0) {
-      send_ack_packet(w);
-      return true;
+      return send_ack_packet(w);
     } else if (data_waiting && own.sent == 0 && dir_[1 - w].closed_form.active &&
                fidelity_ == LinkFidelity::automatic) {
       hand_over(1 - w);  // this direction starts: the other's closed form no longer holds
     } else if (data_waiting && own.sent == 0 && closed_form_allowed(w)) {
       start_closed_form(w);
     } else if (data_waiting) {
-      send_data_packet(w);
-      return true;
+      return send_data_packet(w);
     } else {
       return false;
     }
@@ -233,6 +235,9 @@ bool Link::start_packet(int w) {
 // woken at the packet's end by a timed wire_wake (or earlier by another, and sleeps on).
 bool Link::start_at_once(int w) {
   Direction& own = dir_[w];
+  if ((own.carrying == WirePacket::data_settled || own.carrying == WirePacket::ack_settled) &&
+      sc_time_stamp() >= own.wire_busy_until)
+    own.carrying = WirePacket::none;  // it has ended: nothing was left to do at its end
   if (faulted_ || deadline_waits_ > 0 || own.carrying != WirePacket::none || own.in_flight.active ||
       dir_[1 - w].in_flight.active)
     return false;
@@ -247,9 +252,12 @@ void Link::carry(int w, WirePacket packet, const sc_time& start, const sc_time& 
   own.wire_busy_until = start + length;
 }
 
-void Link::send_data_packet(int di) {
+// A data packet's end is an event only where another party can act on it; see
+// data_end_settled_now.
+bool Link::send_data_packet(int di) {
   Direction& d = dir_[di];
   const sc_time start = sc_time_stamp();
+  settle_arrival(di);
   if (d.sent == 0) {  // the first byte of a message: both ends are now communicating
     d.receiving = true;
     d.incoming =
@@ -263,7 +271,37 @@ void Link::send_data_packet(int di) {
   d.may_send = false;
   apply_byte_fault(di);
   if (!d.byte_lost) d.detect_event.notify(detect_delay_);
-  carry(di, WirePacket::data, start, data_packet_);
+  if (!data_end_settled_now(di)) {
+    carry(di, WirePacket::data, start, data_packet_);
+    return true;
+  }
+  carry(di, WirePacket::data_settled, start, data_packet_);
+  d.activity.packet(start, data_packet_, true);  // nothing else is recorded on this wire meanwhile
+  d.arrival_pending = true;
+  d.arrival_at = start + data_packet_;
+  return false;
+}
+
+// The arrival of a byte that is not its message's last changes only counts: the bytes received
+// (read at the last) and the DMA cycles (dma_bytes counts a pending arrival from its time). Not
+// with a fault (a byte may be lost), a deadline (resetch), a hand-over, or a T414 (its
+// acknowledge depends on the input being armed when the byte has arrived).
+bool Link::data_end_settled_now(int di) const {
+  const Direction& d = dir_[di];
+  const Direction& other = dir_[1 - di];
+  return !faulted_ && deadline_waits_ == 0 && detect_delay_ < data_packet_ &&
+         d.sent < d.incoming.bytes && !d.closed_form.active && !other.closed_form.active &&
+         !d.in_flight.active && !other.in_flight.active;
+}
+
+// The byte of a settled data packet arrives: what finish_data_packet would have done at its end,
+// which was at the start of that instant, before anything else then.
+void Link::settle_arrival(int di) {
+  Direction& d = dir_[di];
+  if (!d.arrival_pending) return;
+  d.arrival_pending = false;
+  ++d.received;
+  d.dma_received.add(1, d.arrival_at, true);
 }
 
 void Link::finish_data_packet(int di, const sc_time& start) {
@@ -276,9 +314,32 @@ void Link::finish_data_packet(int di, const sc_time& start) {
   on_byte_arrived(di);
 }
 
-void Link::send_ack_packet(int w) {
+// An acknowledge's end is an event only where another party can act on it. It is settled when it
+// starts -- recorded, counted, and its processing scheduled -- when that end changes nothing
+// anyone else can see: it is not the message's last (whose end lets the sender go on), and the
+// wire's own direction is silent (nothing of its own recorded or labelled meanwhile). The wire
+// sleeps on; a wire_wake before the end finds it busy until then.
+bool Link::send_ack_packet(int w) {
   --dir_[w].acks_pending;
-  carry(w, WirePacket::ack, sc_time_stamp(), ack_packet_);
+  const sc_time start = sc_time_stamp();
+  if (!ack_end_settled_now(w)) {
+    carry(w, WirePacket::ack, start, ack_packet_);
+    return true;
+  }
+  carry(w, WirePacket::ack_settled, start, ack_packet_);
+  dir_[w].activity.packet(start, ack_packet_, false);
+  Direction& d = dir_[1 - w];
+  ++d.acked;
+  d.process_event.notify(ack_packet_ + process_delay_);
+  return false;
+}
+
+bool Link::ack_end_settled_now(int w) const {
+  const Direction& own = dir_[w];
+  const Direction& d = dir_[1 - w];
+  return !faulted_ && deadline_waits_ == 0 && own.queue.empty() && !own.closed_form.active &&
+         !d.closed_form.active && !own.in_flight.active && !d.in_flight.active &&
+         !d.queue.empty() && d.acked + 1 < d.queue.front().bytes;
 }
 
 void Link::finish_ack_packet(int w, const sc_time& start) {
@@ -345,6 +406,7 @@ void Link::on_ack_processed(int di) {
 
 void Link::on_byte_arrived(int di) {
   Direction& d = dir_[di];
+  settle_arrival(di);
   ++d.received;
   d.dma_received.add(1, sc_time_stamp());
   // A T414 acknowledges after the whole packet: a byte taken by a waiting input is owed its

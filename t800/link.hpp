@@ -118,7 +118,8 @@ class Link : public sc_core::sc_module {
     std::int64_t late_at(const sc_core::sc_time& t0) const {
       return queried && query_at == t0 ? late : 0;
     }
-    void add(std::int64_t n, const sc_core::sc_time& at);
+    // `counted_first`: as if counted at the start of instant `at`, before any query then.
+    void add(std::int64_t n, const sc_core::sc_time& at, bool counted_first = false);
     std::int64_t before(const sc_core::sc_time& now) const {
       return total - (latest_at == now ? latest : 0);
     }
@@ -159,8 +160,9 @@ class Link : public sc_core::sc_module {
     bool now() const { return armed && sc_core::sc_time_stamp() >= at; }
   };
 
-  // What a wire is carrying; its process is woken when the packet ends.
-  enum class WirePacket { none, data, ack, in_flight };
+  // What a wire is carrying; its process is woken when the packet ends, except for a packet whose
+  // end was settled when it started (see send_data_packet, send_ack_packet).
+  enum class WirePacket { none, data, data_settled, ack, ack_settled, in_flight };
 
   // Every event and process of a link is named after its role and direction: SystemC would
   // otherwise generate a unique name for each (a search per name), a sixth of the set-up of a
@@ -190,6 +192,10 @@ class Link : public sc_core::sc_module {
     sc_core::sc_time packet_start;
     sc_core::sc_event wire_wake, detect_event, process_event;
     sc_core::sc_time wire_busy_until;  // end of the packet this wire carries
+    // A data packet whose end was settled when it started: its byte arrives at `arrival_at`,
+    // counted when the next packet starts (or now, by dma_bytes).
+    bool arrival_pending = false;
+    sc_core::sc_time arrival_at;
     InFlight in_flight;
     LinkActivity activity;
     ClosedForm closed_form;
@@ -210,9 +216,12 @@ class Link : public sc_core::sc_module {
   bool start_packet(int wire);  // false: nothing to send now
   void carry(int wire, WirePacket packet, const sc_core::sc_time& start,
              const sc_core::sc_time& length);
-  void send_data_packet(int d);
+  bool send_data_packet(int d);  // false: its end needs no wake
+  bool data_end_settled_now(int d) const;
+  void settle_arrival(int d);
   void finish_data_packet(int d, const sc_core::sc_time& start);
-  void send_ack_packet(int wire);
+  bool send_ack_packet(int wire);  // false: its end needs no wake
+  bool ack_end_settled_now(int wire) const;
   void finish_ack_packet(int wire, const sc_core::sc_time& start);
   void finish_in_flight(int wire);
   // closed form
