@@ -24,6 +24,8 @@ install(FILES ${PROJECT_BINARY_DIR}/include/t800sim/version.hpp DESTINATION ${CM
 set(T800SIM_DETAIL_HEADERS
     t800/codegen/recording.hpp
     t800/compute_work.hpp
+    t800/isa/instruction.hpp
+    t800/isa/opcode.hpp
     t800/operation_mix.hpp
     workloads/dynamics/counted.hpp
     workloads/dynamics/op_counts.hpp

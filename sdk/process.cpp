@@ -46,6 +46,38 @@ std::int64_t Process::cycles(const Kernel& kernel) const {
   return impl_.machine().compute_model(impl_.node()).cycles(kernel.work());
 }
 
+std::int64_t Process::cycles(const Instructions& code) const {
+  if (impl_.node() < 0)
+    throw std::logic_error("process " + name() + " runs on the host, which runs no T800 code");
+  return impl_.machine().compute_model(impl_.node()).process_cycles(code);
+}
+
+void Process::stop(const std::string& why) {
+  impl_.stop(why);
+}
+
+std::vector<int> Process::nodes(const std::vector<std::string>& path) const {
+  std::vector<int> out;
+  for (const std::string& processor : path) {
+    const int node = impl_.machine().topology().find(processor);
+    if (node < 0)
+      throw std::invalid_argument("process " + name() + ": a fault's path names processor " +
+                                  processor + ", which the network does not have");
+    out.push_back(node);
+  }
+  return out;
+}
+
+int Process::fault_detected(const std::vector<std::string>& path, const std::string& by) {
+  network::Machine& m = impl_.machine();
+  return m.faults().detected(m, nodes(path), by);
+}
+
+void Process::fault_recovered(const std::vector<std::string>& path, const std::string& how) {
+  network::Machine& m = impl_.machine();
+  m.faults().recovered(m, nodes(path), how);
+}
+
 void Process::Wire::send(std::int64_t bytes, std::any value) {
   if (failed_) return;
   t800::Message m{bytes, std::move(value), label_.empty() ? channel_.name : label_};
@@ -115,6 +147,10 @@ std::int64_t Process::timer() const {
   impl_.run_instructions(
       {{t800::isa::Op::ldtimer, 0, 0, false, {}, "TIMER ?"},
        {t800::isa::Op::stl, 1, 0, false, {t800::isa::Region::workspace, -1}, "t"}});
+  return impl_.clock();
+}
+
+std::int64_t Process::clock() const {
   return impl_.clock();
 }
 

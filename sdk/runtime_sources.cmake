@@ -9,4 +9,5 @@ set(SDK_RUNTIME_SOURCES
     ${PROJECT_SOURCE_DIR}/sdk/kernel.cpp
     ${PROJECT_SOURCE_DIR}/sdk/placement.cpp
     ${PROJECT_SOURCE_DIR}/sdk/process.cpp
-    ${PROJECT_SOURCE_DIR}/sdk/realise.cpp)
+    ${PROJECT_SOURCE_DIR}/sdk/realise.cpp
+    ${PROJECT_SOURCE_DIR}/sdk/shared.cpp)

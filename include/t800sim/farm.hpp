@@ -8,8 +8,10 @@
 //   static_list          the tasks are allocated before the run by list scheduling on their
 //                        predicted costs and each worker's hop distance
 //                        (t800sim/farm_schedule.hpp); one order and one reply per worker and round
-//   on_demand            the master ALTs over its workers' replies and answers each with the next
-//                        task, longest first; `in_flight` tasks per worker (a feeder buffers them)
+//   on_demand            each reply earns its worker the next task (longest first, or in the
+//                        tasks' order); `in_flight` tasks per worker (a feeder buffers them). The
+//                        master waits for the replies in a PAR of one dialogue per worker, or in
+//                        one ALT over them all (FarmOptions::alt_master)
 //   explicit_allocation  the allocation is given as text, "P1: a b c; P2: d e" (errors name the
 //                        bad token)
 // Recovery (static and explicit, opt-in): the master's order and its wait for the reply give up at
@@ -35,6 +37,7 @@
 #include <utility>
 #include <vector>
 
+#include "t800sim/alt.hpp"
 #include "t800sim/farm_protocol.hpp"
 #include "t800sim/farm_schedule.hpp"
 #include "t800sim/kernel.hpp"
@@ -50,7 +53,18 @@ struct FarmOptions {
   std::string allocation;                         // explicit_allocation
   std::string allocation_setting = "allocation";  // what its errors call the allocation
   int in_flight = 2;                              // on_demand: tasks out per worker
-  bool recovery = false;                          // static_list, explicit_allocation
+  // on_demand: the master waits for its workers' replies in one ALT over all of them (occam's
+  // ALT i = 0 FOR n, each reply answered before the next is taken) instead of a PAR of one
+  // dialogue per worker.
+  bool alt_master = false;
+  // on_demand: the tasks go out longest first by their predicted cycles, or in their own order --
+  // a master that cannot know a task's cost before it has run (a ray tracer's lines).
+  bool longest_first = true;
+  // on_demand: a worker's result leaves through a one-place buffer beside its computer, which
+  // starts its next task at once instead of waiting for the result to cross the link (TN07's
+  // workers hand their results to the router on their transputer).
+  bool buffered_replies = false;
+  bool recovery = false;  // static_list, explicit_allocation
   // How long the master waits for a worker beyond its predicted time (0: that predicted time
   // again, plus 50 us).
   double timeout_us = 0;
@@ -115,6 +129,10 @@ class Farm {
                                   std::to_string(options_.in_flight));
     if (options_.recovery && on_demand())
       throw std::invalid_argument("a farm recovers with a static or explicit schedule");
+    if (!on_demand() &&
+        (options_.alt_master || !options_.longest_first || options_.buffered_replies))
+      throw std::invalid_argument(
+          "a farm's alt_master, longest_first and buffered_replies are on-demand settings");
   }
   // Its processes hold on to it: it stays where it was built.
   Farm(const Farm&) = delete;
@@ -141,6 +159,8 @@ class Farm {
       to_.push_back(b.channel<FarmOrders<Shared>>("to " + at, master, me));
       from_.push_back(b.channel<FarmReplies<Result>>("from " + at, me, master));
       queue_.push_back(b.channel<INT>("queue " + at, me, me));
+      if (on_demand() && options_.buffered_replies)
+        outbox_.push_back(b.channel<FarmReplies<Result>>("outbox " + at, me, me));
     }
     for (std::size_t w = 0; w < worker_processors.size(); ++w) {
       if (!has_work(w)) continue;
@@ -157,6 +177,8 @@ class Farm {
   std::vector<TaskResult> round(Process& master, const SharedValue& shared) {
     results_.assign(tasks_.size(), TaskResult{});
     done_by_.assign(plan_.workers.size(), {});
+    outstanding_.assign(plan_.workers.size(), 0);
+    ended_.assign(plan_.workers.size(), false);
     next_ = 0;
     failed_.clear();
     recovery_started_us_ = recovery_done_us_ = -1;
@@ -170,15 +192,18 @@ class Farm {
           return;
         }
         branch.out(to_[w], order);
-        if (on_demand())
-          hand_out(branch, w);
-        else
+        if (!on_demand())
           collect(branch, w);
+        else if (options_.alt_master)
+          fill(branch, w);
+        else
+          hand_out(branch, w);
       });
     }
     timing_.start_us = master.now_us();
     const std::vector<double> busy_before = detail::farm_busy_now(master, plan_);
     master.par(talk);
+    if (on_demand() && options_.alt_master) serve_all(master);
     if (!failed_.empty()) reassign(master, shared);
     timing_.end_us = master.now_us();
     const std::vector<double> busy_after = detail::farm_busy_now(master, plan_);
@@ -252,38 +277,64 @@ class Farm {
     done_by_[w] = tasks;
   }
 
-  // On demand: each worker holds up to in_flight tasks; every result earns it the next, longest
-  // first. When none is left it gets an end-of-round order, and the master waits for what it still
-  // has out.
+  // On demand: each worker holds up to in_flight tasks; every result earns it the next. When none
+  // is left it gets an end-of-round order, and the master waits for what it still has out.
   void hand_out(Process& p, std::size_t w) {
-    int outstanding = 0;
-    bool ended = false;
-    auto give = [&] {
-      Order o;
-      if (next_ < int(tasks_.size())) {
-        o.kind = Order::Kind::task;
-        o.task = dispatch_order()[std::size_t(next_++)];
-        ++outstanding;
-      } else if (!ended) {
-        o.kind = Order::Kind::end_of_round;
-        o.task = kEndOfRound;
-        ended = true;
-      } else {
-        return;
-      }
-      p.out(to_[w], o);
-    };
-    for (int i = 0; i < options_.in_flight; ++i) give();
-    while (outstanding > 0) {
-      const Reply r = p.in(from_[w]);
-      if (r.task < 0 || std::size_t(r.task) >= results_.size() || r.results.size() != 1)
-        detail::farm_stop(p, "a task index out of range (" + std::to_string(r.task) + ")");
-      results_[std::size_t(r.task)] = r.results.front();
-      done_by_[w].push_back(r.task);
-      --outstanding;
-      give();
+    fill(p, w);
+    while (outstanding_[w] > 0) {
+      take(p, w, p.in(from_[w]));
+      give(p, w);
     }
-    if (!ended) give();
+    if (!ended_[w]) give(p, w);
+  }
+
+  void fill(Process& p, std::size_t w) {
+    for (int i = 0; i < options_.in_flight; ++i) give(p, w);
+  }
+
+  // The ALT-ing master: whichever worker answers first (the first in order when several have) has
+  // its result taken and is given the next task, until no worker has a task out.
+  void serve_all(Process& master) {
+    const auto busy = [this] {
+      return std::any_of(outstanding_.begin(), outstanding_.end(), [](int n) { return n > 0; });
+    };
+    while (busy()) {
+      Alt alt(master);
+      for (std::size_t w = 0; w < from_.size(); ++w)
+        alt.input(
+            from_[w],
+            [this, &master, w](const Reply& r) {
+              take(master, w, r);
+              give(master, w);
+            },
+            outstanding_[w] > 0);
+      alt.select();
+    }
+  }
+
+  // Worker w's next task, or once none is left its end-of-round order (and then nothing).
+  void give(Process& p, std::size_t w) {
+    Order o;
+    if (next_ < int(tasks_.size())) {
+      o.kind = Order::Kind::task;
+      o.task = dispatch_order()[std::size_t(next_++)];
+      ++outstanding_[w];
+    } else if (!ended_[w]) {
+      o.kind = Order::Kind::end_of_round;
+      o.task = kEndOfRound;
+      ended_[w] = true;
+    } else {
+      return;
+    }
+    p.out(to_[w], o);
+  }
+
+  void take(Process& p, std::size_t w, const Reply& r) {
+    if (r.task < 0 || std::size_t(r.task) >= results_.size() || r.results.size() != 1)
+      detail::farm_stop(p, "a task index out of range (" + std::to_string(r.task) + ")");
+    results_[std::size_t(r.task)] = r.results.front();
+    done_by_[w].push_back(r.task);
+    --outstanding_[w];
   }
 
   void worker(Process& p, std::size_t w) {
@@ -310,25 +361,39 @@ class Farm {
   }
 
   // A feeder takes orders off the link while a computer works through them, so the next task is
-  // already on the worker when the current one ends (the buffering that keeps links busy).
+  // already on the worker when the current one ends (the buffering that keeps links busy); with
+  // buffered replies a sender takes each result off the computer and puts it on the link.
   void on_demand_round(Process& p, std::size_t w, const SharedValue& shared) {
     const Chan<INT> queue = queue_[w];
-    p.par({[this, w, queue](Process& feeder) {
-             for (;;) {
-               const Order o = feeder.in(to_[w]);
-               const INT task = o.kind == Order::Kind::task ? o.task : kEndOfRound;
-               feeder.out(queue, task);
-               if (task == kEndOfRound) return;
-             }
-           },
-           [this, w, queue, &shared](Process& computer) {
-             for (;;) {
-               const INT task = computer.in(queue);
-               if (task == kEndOfRound) return;
-               Reply r{task, {run_task(computer, task, shared)}};
-               computer.out(from_[w], r);
-             }
-           }});
+    const bool buffered = options_.buffered_replies;
+    std::vector<Process::Body> parts{
+        [this, w, queue](Process& feeder) {
+          for (;;) {
+            const Order o = feeder.in(to_[w]);
+            const INT task = o.kind == Order::Kind::task ? o.task : kEndOfRound;
+            feeder.out(queue, task);
+            if (task == kEndOfRound) return;
+          }
+        },
+        [this, w, queue, buffered, &shared](Process& computer) {
+          const Chan<FarmReplies<Result>> reply_to = buffered ? outbox_[w] : from_[w];
+          for (;;) {
+            const INT task = computer.in(queue);
+            if (task == kEndOfRound) break;
+            Reply r{task, {run_task(computer, task, shared)}};
+            computer.out(reply_to, r);
+          }
+          if (buffered) computer.out(reply_to, Reply{kEndOfRound, {}});
+        }};
+    if (buffered)
+      parts.push_back([this, w](Process& sender) {
+        for (;;) {
+          const Reply r = sender.in(outbox_[w]);
+          if (r.task == kEndOfRound) return;
+          sender.out(from_[w], r);
+        }
+      });
+    p.par(parts);
   }
 
   TaskResult run_task(Process& p, INT t, const SharedValue& shared) {
@@ -340,9 +405,10 @@ class Farm {
   const std::vector<int>& dispatch_order() {
     if (order_.empty()) {
       for (int i = 0; i < int(tasks_.size()); ++i) order_.push_back(i);
-      std::stable_sort(order_.begin(), order_.end(), [&](int a, int b) {
-        return plan_.task_cycles[std::size_t(a)] > plan_.task_cycles[std::size_t(b)];
-      });
+      if (options_.longest_first)
+        std::stable_sort(order_.begin(), order_.end(), [&](int a, int b) {
+          return plan_.task_cycles[std::size_t(a)] > plan_.task_cycles[std::size_t(b)];
+        });
     }
     return order_;
   }
@@ -455,10 +521,13 @@ class Farm {
   std::vector<Chan<FarmOrders<Shared>>> to_;
   std::vector<Chan<FarmReplies<Result>>> from_;
   std::vector<Chan<INT>> queue_;
+  std::vector<Chan<FarmReplies<Result>>> outbox_;  // buffered replies only
   std::vector<TaskResult> results_;
   std::vector<std::vector<int>> done_by_;
   std::vector<int> order_;
   int next_ = 0;
+  std::vector<int> outstanding_;     // on demand: tasks out per worker
+  std::vector<bool> ended_;          // on demand: told the round is over
   std::vector<std::size_t> lost_;    // worker indices, in the order given up
   std::vector<std::size_t> failed_;  // this round's
   FarmRoundTiming timing_;

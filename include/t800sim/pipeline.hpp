@@ -15,6 +15,14 @@
 // round-robin: member i works on rounds i, i + k, ...; the stages before and after it send to and
 // take from the member whose round it is, so items stay in order.
 //
+// A stage whose rounds are not one item in, one item out -- a stage that takes several items per
+// round, sends a round's items to chosen members of a group, or talks to a stage further on -- is
+// written as a process: process_stage / process_group give the body its ends (StageEnds: a channel
+// from every member of the stage before, one to every member of the stage after) and the body
+// serves its rounds itself, as an occam programmer would write that process. A channel back to an
+// earlier stage (a loop, like the elimination's reduced matrix returning to level 1) is an ordinary
+// channel the program declares between the two processes by their names (Builder::channel).
+//
 //   const auto pipe = t800sim::pipeline<REAL64>()
 //       .stage<REAL64>("square", [](Process& p, double x) { p.compute(500); return x * x; })
 //       .on("P1")
@@ -34,6 +42,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <typeinfo>
 #include <utility>
 #include <vector>
 
@@ -41,6 +50,7 @@
 #include "t800sim/kernel.hpp"
 #include "t800sim/process.hpp"
 #include "t800sim/program.hpp"
+#include "t800sim/relay.hpp"
 
 namespace t800sim {
 
@@ -52,6 +62,12 @@ struct StageWiring {
   std::string before, after;
   int before_count = 1, after_count = 1;
   int rounds = 0;
+  // A process stage on either side of a boundary may talk to any member of the other: every pair
+  // is joined. Otherwise member i is joined to the members that share one of its rounds.
+  bool all_before = false, all_after = false;
+  // Members reached through link processors (PipelineDecl::relayed): this stage's behind its own
+  // fan-out / fan-in, the stage after's behind its fan-out, the stage before's behind its fan-in.
+  std::vector<bool> via_fan_out, via_fan_in, after_via_fan_out, before_via_fan_in;
 };
 
 // A declared stage, its types erased: declares its processes and its ends of the channels.
@@ -60,10 +76,28 @@ struct StageSpec {
   int count = 1;
   bool group = false;
   bool buffered = false;
+  bool process = false;  // written as a process (process_stage / process_group)
   std::vector<std::string> on;
   std::vector<Kernel> code;
   std::function<void(Builder&, const StageSpec&, const StageWiring&)> declare;
+  // Link processors (relayed): their processor names, and their declaration, typed.
+  const std::type_info* input = nullptr;  // the protocols in and out, for relayed()'s check
+  const std::type_info* output = nullptr;
+  std::string fan_out, fan_in;
+  std::function<void(Builder&, const StageSpec&, const StageWiring&)> declare_relays;
 };
+
+// The channel into member i of `stage` from member j of the stage before, and out of member i to
+// member j of the stage after: direct, or through a link processor's relay.
+std::string in_channel(const StageWiring& w, const std::string& stage, int j, int i);
+std::string out_channel(const StageWiring& w, const std::string& stage, int i, int j);
+std::string fan_out_name(const std::string& stage);
+std::string fan_in_name(const std::string& stage);
+// Which members of a stage on `members` (one per member) a stage on `neighbour` reaches only
+// through `relay`: no link to it, and the relay linked to both. Throws std::logic_error when a
+// processor is not in the network.
+std::vector<bool> behind(const Network& network, const std::string& neighbour,
+                         const std::string& relay, const std::vector<std::string>& members);
 
 // A member's process name: name[i] in a group, name for one process.
 std::string member(const std::string& name, bool group, int i);
@@ -72,6 +106,8 @@ std::string link_name(const std::string& from, const std::string& to, int j, int
 // Member i of a stage of `count` talks to the members of a neighbour of `other` that share one of
 // its rounds: round r is on member r % count here and r % other there.
 std::vector<int> partners(int i, int count, int other, int rounds);
+// Member i's partners across one boundary: every member of the other side, or partners().
+std::vector<int> joined(bool all, int i, int count, int other, int rounds);
 // A stage's processes: a group name[0..count-1], or one process `name`.
 ProcessDecl& members(Builder& b, const std::string& name, int count, bool group,
                      Process::IndexedBody body);
@@ -89,22 +125,60 @@ template <class P>
 std::vector<In<P>> inputs_of(Builder& b, const StageWiring& w, const std::string& stage,
                              const std::string& process, bool group, int i, int count) {
   std::vector<In<P>> in(std::size_t(w.before_count));
-  for (int j : partners(i, count, w.before_count, w.rounds))
-    in[std::size_t(j)] = b.input<P>(link_name(w.before, stage, j, i), member(process, group, i));
+  for (int j : joined(w.all_before, i, count, w.before_count, w.rounds))
+    in[std::size_t(j)] = b.input<P>(in_channel(w, stage, j, i), member(process, group, i));
   return in;
 }
 template <class P>
 std::vector<Out<P>> outputs_of(Builder& b, const StageWiring& w, const std::string& stage,
                                const std::string& process, bool group, int i, int count) {
   std::vector<Out<P>> out(std::size_t(w.after_count));
-  for (int j : partners(i, count, w.after_count, w.rounds))
-    out[std::size_t(j)] = b.output<P>(link_name(stage, w.after, i, j), member(process, group, i));
+  for (int j : joined(w.all_after, i, count, w.after_count, w.rounds))
+    out[std::size_t(j)] = b.output<P>(out_channel(w, stage, i, j), member(process, group, i));
   return out;
 }
 
 }  // namespace detail
 
-// The client's ends of a built pipeline: in(r) takes round r's item, out(r) gives its result.
+// What a process stage's body is given: its member index (0 for a stage of one process), the
+// rounds it serves, and its channels: from[j] from member j of the stage before (the feeder: one),
+// to[j] to member j of the stage after (the collector: one).
+template <class In_, class Out_>
+struct StageEnds {
+  int member = 0;
+  int rounds = 0;
+  std::vector<In<In_>> from;
+  std::vector<Out<Out_>> to;
+
+  // A channel and the members of the neighbouring stage it joins this one to: one each, or the
+  // members behind one relay (relayed), which share it -- a message for several of them is sent
+  // once on it, the relay copies it.
+  template <class End>
+  struct Port {
+    End channel;
+    std::vector<int> members;
+  };
+  std::vector<Port<Out<Out_>>> to_ports() const { return ports(to); }
+  std::vector<Port<In<In_>>> from_ports() const { return ports(from); }
+
+ private:
+  template <class End>
+  static std::vector<Port<End>> ports(const std::vector<End>& ends) {
+    std::vector<Port<End>> out;
+    for (std::size_t j = 0; j < ends.size(); ++j) {
+      if (!ends[j].slot()) continue;
+      auto same = std::find_if(out.begin(), out.end(), [&](const Port<End>& p) {
+        return p.channel.slot() == ends[j].slot();
+      });
+      if (same == out.end()) same = out.insert(out.end(), Port<End>{ends[j], {}});
+      same->members.push_back(int(j));
+    }
+    return out;
+  }
+};
+
+// The client's ends of a built pipeline: in(r) takes round r's item, out(r) gives its result (the
+// member of the first / last stage whose round r is; of a process group, member r mod count).
 template <class In_, class Out_>
 class Pipeline {
  public:
@@ -130,10 +204,61 @@ class PipelineDecl {
   // A parallel stage of `count` processes, name[0..count-1], dealt the rounds round-robin.
   template <class Next, class F>
   PipelineDecl<First, Next> group(const std::string& name, int count, F f) && {
-    if (count < 1)
-      throw std::invalid_argument("pipeline stage " + name +
-                                  ": a group needs at least one process");
+    check_count(name, count);
     return std::move(*this).template add<Next>(name, count, true, std::move(f));
+  }
+  // A stage written as a process: body(process, ends) serves every round; `Next` is the protocol
+  // of what it sends on. The stages next to it are joined to it by every pair of members.
+  template <class Next, class Body>
+  PipelineDecl<First, Next> process_stage(const std::string& name, Body body) && {
+    return std::move(*this).template add_process<Next>(name, 1, false, std::move(body));
+  }
+  // A group of `count` processes name[0..count-1] written as processes: body(process, ends) with
+  // ends.member the member's index; which member gets which item is the bodies' business.
+  template <class Next, class Body>
+  PipelineDecl<First, Next> process_group(const std::string& name, int count, Body body) && {
+    check_count(name, count);
+    return std::move(*this).template add_process<Next>(name, count, true, std::move(body));
+  }
+  // The last stage (a process group) reaches the stage before through the link processor
+  // plan.fan_out and the stage after through plan.fan_in where it has no link of its own to them
+  // (t800sim/relay.hpp): which members go through them follows from the stages' processors (on(),
+  // which the neighbours need too) and the network's links. The bodies are unchanged: a member's
+  // ends are the relay's channels, and members behind one relay share the neighbour's channel to
+  // it -- the neighbour sends each message once on it, in the plan's order.
+  template <class In_>
+  PipelineDecl relayed(RelayPlan<In_, Last> plan) && {
+    detail::StageSpec& s = last();
+    if (!s.process || !s.group)
+      throw std::logic_error("pipeline stage " + s.name + ": only a process group is relayed");
+    if (*s.input != typeid(value_of<In_>))
+      throw std::logic_error("pipeline stage " + s.name +
+                             ": the relay plan's input protocol is not the stage's");
+    s.fan_out = plan.fan_out;
+    s.fan_in = plan.fan_in;
+    s.declare_relays = [plan](Builder& b, const detail::StageSpec& stage,
+                              const detail::StageWiring& w) {
+      std::vector<int> out_served, in_served;
+      std::vector<std::string> to, from;
+      for (int e = 0; e < stage.count; ++e) {
+        if (w.via_fan_out[std::size_t(e)]) {
+          out_served.push_back(e);
+          to.push_back(detail::in_channel(w, stage.name, 0, e));
+        }
+        if (w.via_fan_in[std::size_t(e)]) {
+          in_served.push_back(e);
+          from.push_back(detail::out_channel(w, stage.name, e, 0));
+        }
+      }
+      const std::string fo = detail::fan_out_name(stage.name), fi = detail::fan_in_name(stage.name);
+      if (!out_served.empty())
+        declare_fan_out(b, fo, plan.fan_out, plan, out_served,
+                        detail::link_name(w.before, fo, 0, 0), to);
+      if (!in_served.empty())
+        declare_fan_in(b, fi, plan.fan_in, plan, in_served, from,
+                       detail::link_name(fi, w.after, 0, 0));
+    };
+    return std::move(*this);
   }
   // The last stage's processors: one, or one per member of a group (a scene's [placement]
   // overrides them by the processes' names).
@@ -147,6 +272,9 @@ class PipelineDecl {
   // The last stage as input, worker and output processes in PAR, joined by one-item buffers:
   // name_input, name, name_output, on the same processor.
   PipelineDecl buffered() && {
+    if (last().process)
+      throw std::logic_error("pipeline stage " + last().name +
+                             ": a process stage buffers as its body does, not by buffered()");
     last().buffered = true;
     return std::move(*this);
   }
@@ -163,22 +291,40 @@ class PipelineDecl {
                               int rounds) const {
     if (stages_.empty()) throw std::invalid_argument("a pipeline needs at least one stage");
     if (rounds < 0) throw std::invalid_argument("a pipeline serves zero or more rounds");
+    std::vector<std::vector<bool>> via_out, via_in;
+    for (std::size_t s = 0; s < stages_.size(); ++s) {
+      via_out.push_back(behind(b, s, -1, stages_[s].fan_out));
+      via_in.push_back(behind(b, s, +1, stages_[s].fan_in));
+    }
+    std::vector<detail::StageWiring> wiring;
     for (std::size_t s = 0; s < stages_.size(); ++s) {
       detail::StageWiring w;
+      w.via_fan_out = via_out[s];
+      w.via_fan_in = via_in[s];
+      w.before_via_fan_in = s == 0 ? std::vector<bool>(1, false) : via_in[s - 1];
+      w.after_via_fan_out = s + 1 == stages_.size() ? std::vector<bool>(1, false) : via_out[s + 1];
       w.rounds = rounds;
       w.before = s == 0 ? feeder : stages_[s - 1].name;
       w.before_count = s == 0 ? 1 : stages_[s - 1].count;
       const bool last_stage = s + 1 == stages_.size();
       w.after = last_stage ? collector : stages_[s + 1].name;
       w.after_count = last_stage ? 1 : stages_[s + 1].count;
+      w.all_before = stages_[s].process || (s > 0 && stages_[s - 1].process);
+      w.all_after = stages_[s].process || (!last_stage && stages_[s + 1].process);
       stages_[s].declare(b, stages_[s], w);
+      wiring.push_back(w);
     }
+    for (std::size_t s = 0; s < stages_.size(); ++s)
+      if (stages_[s].declare_relays) stages_[s].declare_relays(b, stages_[s], wiring[s]);
     Pipeline<First, Last> ends;
     const detail::StageSpec &head = stages_.front(), &tail = stages_.back();
-    // Members beyond the rounds' number take nothing: no channel to them.
-    for (int i = 0; i < std::min(head.count, rounds); ++i)
+    // Members beyond the rounds' number take nothing: no channel to them (a process group's
+    // members are all joined: its body deals the rounds).
+    const int entries = head.process ? head.count : std::min(head.count, rounds);
+    const int exits = tail.process ? tail.count : std::min(tail.count, rounds);
+    for (int i = 0; i < entries; ++i)
       ends.entry_.push_back(b.output<First>(detail::link_name(feeder, head.name, 0, i), feeder));
-    for (int i = 0; i < std::min(tail.count, rounds); ++i)
+    for (int i = 0; i < exits; ++i)
       ends.exit_.push_back(b.input<Last>(detail::link_name(tail.name, collector, i, 0), collector));
     return ends;
   }
@@ -190,6 +336,58 @@ class PipelineDecl {
   detail::StageSpec& last() {
     if (stages_.empty()) throw std::logic_error("a pipeline's settings follow a stage");
     return stages_.back();
+  }
+
+  // Stage s's members behind its relay on the side `side` (-1: before, +1: after); all false when
+  // it has none there.
+  std::vector<bool> behind(Builder& b, std::size_t s, int side, const std::string& relay) const {
+    const detail::StageSpec& stage = stages_[s];
+    if (relay.empty()) return std::vector<bool>(std::size_t(stage.count), false);
+    const bool edge = side < 0 ? s == 0 : s + 1 == stages_.size();
+    const detail::StageSpec* neighbour = edge ? nullptr : &stages_[std::size_t(int(s) + side)];
+    if (!neighbour || neighbour->count != 1 || neighbour->on.empty() ||
+        stage.on.size() != std::size_t(stage.count))
+      throw std::logic_error("pipeline stage " + stage.name + ": a relay through " + relay +
+                             " needs a stage of one process " + (side < 0 ? "before" : "after") +
+                             " it, and on() for both (one processor per member)");
+    return detail::behind(b.network(), neighbour->on.front(), relay, stage.on);
+  }
+
+  static void check_count(const std::string& name, int count) {
+    if (count < 1)
+      throw std::invalid_argument("pipeline stage " + name +
+                                  ": a group needs at least one process");
+  }
+
+  template <class Next, class Body>
+  PipelineDecl<First, Next> add_process(const std::string& name, int count, bool group,
+                                        Body body) && {
+    detail::StageSpec spec;
+    spec.name = name;
+    spec.count = count;
+    spec.group = group;
+    spec.process = true;
+    spec.input = &typeid(value_of<Last>);
+    spec.output = &typeid(value_of<Next>);
+    using Ends = StageEnds<Last, Next>;
+    using Work = std::function<void(Process&, const Ends&)>;
+    spec.declare = [work = Work(std::move(body))](Builder& b, const detail::StageSpec& s,
+                                                  const detail::StageWiring& w) {
+      std::vector<Ends> ends(std::size_t(s.count));
+      for (int i = 0; i < s.count; ++i) {
+        Ends& e = ends[std::size_t(i)];
+        e.member = i;
+        e.rounds = w.rounds;
+        e.from = detail::inputs_of<Last>(b, w, s.name, s.name, s.group, i, s.count);
+        e.to = detail::outputs_of<Next>(b, w, s.name, s.name, s.group, i, s.count);
+        for (const Kernel& k : s.code) b.code(detail::member(s.name, s.group, i), k);
+      }
+      ProcessDecl& d = detail::members(b, s.name, s.count, s.group,
+                                       [=](Process& p, int i) { work(p, ends[std::size_t(i)]); });
+      if (!s.on.empty()) d.placed_on(s.on);
+    };
+    stages_.push_back(std::move(spec));
+    return PipelineDecl<First, Next>(std::move(stages_));
   }
 
   template <class Next, class F>

@@ -22,12 +22,18 @@ class Process;
 }
 namespace t800 {
 struct OperationMix;
+namespace isa {
+struct Instruction;
 }
+}  // namespace t800
 
 namespace t800sim {
 
 class Kernel;
 using Mix = t800::OperationMix;
+// T800 instructions written out (t800/isa/instruction.hpp), for code no kernel records (an integer
+// loop over a row's words).
+using Instructions = std::vector<t800::isa::Instruction>;
 
 class Process {
  public:
@@ -48,6 +54,9 @@ class Process {
   // What a kernel costs on this process's processor, in its cycles: what compute(kernel) takes
   // when nothing interrupts it (a program reports or schedules by it).
   std::int64_t cycles(const Kernel& kernel) const;
+  // What a sequence of instructions costs on this processor, in its cycles (its memory's wait
+  // states included): compute(cycles(code)) runs it.
+  std::int64_t cycles(const Instructions& code) const;
 
   // c ! v: returns when the value has been taken (a protocol's items one communication each).
   // Traces and fault reports name the message by its channel, or by `label` when one is given
@@ -103,9 +112,29 @@ class Process {
 
   // TIMER ? t: 1 us ticks at high priority, 64 us at low (the T800's two clocks).
   std::int64_t timer() const;
+  // The same clock without the instructions timer() charges (ldtimer; stl): for a model whose
+  // timer reads are costed elsewhere or not at all (the elimination pipeline's level 3 starts its
+  // ALT's timeout from it).
+  std::int64_t clock() const;
   double tick_us() const;
   // TIMER ? AFTER t: waits until the clock reads later than t.
   void wait_after(std::int64_t t);
+
+  // occam's STOP, as a run-time error (a subscript out of range) ends a process: it stops for ever,
+  // taking no processor time, and the run's deadlock report names it with `why` (and whoever then
+  // waits for it).
+  [[noreturn]] void stop(const std::string& why);
+
+  // A fault-tolerant program's word to the run's fault report (a scene's [[fault]], --fault):
+  // something sent along `path` -- processor names, in the order the message went -- did not
+  // arrive, or arrived wrong, and `by` says who noticed and how. Each fault that has taken effect
+  // on the path (on a link between two processors next to each other in it, or a halted processor
+  // in it) and is not yet recovered counts; the first detection of a fault is the one reported.
+  // Returns how many faults it counted. Throws std::invalid_argument for a name the network lacks.
+  int fault_detected(const std::vector<std::string>& path, const std::string& by);
+  // The program has worked round what it detected on `path` (`how`): those faults are recovered,
+  // the first recovery of each counting (a fault that keeps acting is recovered once).
+  void fault_recovered(const std::vector<std::string>& path, const std::string& how);
 
   // The simulator's process, for the SDK's own code (t800sim/alt.hpp).
   network::Process& impl() { return impl_; }
@@ -134,6 +163,8 @@ class Process {
   };
   Wire open(const detail::ChannelSlot* slot, bool writing, double deadline_us = -1,
             const std::string& label = {});
+  // A path of processor names as the simulator numbers them.
+  std::vector<int> nodes(const std::vector<std::string>& path) const;
 
   network::Process& impl_;
 };

@@ -18,6 +18,8 @@
 //   CHAN OF ANY c: c ! [buf FROM 0 FOR n]
 //     (an INT header, then n-1 REAL32s)   Chan<Packed<INT, Block<REAL32>>>       std::tuple<int32_t, std::vector<float>>
 //   PROTOCOL Q CASE data; REAL32 | stop   Chan<Variant<Case<REAL32>, Case<>>>    std::variant<Case<REAL32>, Case<>>
+//   CHAN OF ANY c: c ! finish (an INT)
+//     or c ! [m FROM 0 FOR n] (REAL32s)   Chan<Untagged<INT, Block<REAL32>>>     std::variant<int32_t, std::vector<float>>
 // clang-format on
 #pragma once
 
@@ -243,6 +245,23 @@ struct protocol<Sequential<Items...>> {
   static value_type receive(detail::Wire& w) { return value_type{protocol<Items>::receive(w)...}; }
 };
 
+namespace detail {
+// One communication of a whole value (a packed or untagged protocol's), the simulator told once per
+// type how a link fault's changed byte lands in it (Protocol::flip).
+template <class Protocol>
+bool flip_whole(std::any& value, std::int64_t byte, std::uint8_t mask) {
+  auto* v = std::any_cast<typename Protocol::value_type>(&value);
+  return v && byte >= 0 && Protocol::flip(*v, byte, mask);
+}
+template <class Protocol>
+void send_whole(Wire& w, const typename Protocol::value_type& v) {
+  static const bool registered =
+      (register_value_bytes(typeid(typename Protocol::value_type), &flip_whole<Protocol>), true);
+  (void)registered;
+  w.send(Protocol::bytes(v), v);
+}
+}  // namespace detail
+
 // One communication of all the items' bytes, in order; a link fault's changed byte lands in the
 // item (and element) at that offset.
 template <class... Items>
@@ -275,19 +294,8 @@ struct protocol<Packed<Items...>> {
         v);
     return changed;
   }
-  static void send(detail::Wire& w, const value_type& v) {
-    static const bool registered =
-        (detail::register_value_bytes(typeid(value_type), &flip_any), true);
-    (void)registered;
-    w.send(bytes(v), v);
-  }
+  static void send(detail::Wire& w, const value_type& v) { detail::send_whole<protocol>(w, v); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
-
- private:
-  static bool flip_any(std::any& value, std::int64_t byte, std::uint8_t mask) {
-    value_type* v = std::any_cast<value_type>(&value);
-    return v && byte >= 0 && flip(*v, byte, mask);
-  }
 };
 
 template <class... Items>
@@ -343,6 +351,56 @@ struct protocol<Variant<Cases...>> {
     }...};
     if (tag >= sizeof...(Cases)) throw std::logic_error("a variant protocol's tag is out of range");
     return cases[tag](w);
+  }
+};
+
+// One of several messages, each one communication, sent with no tag: its bytes are the chosen
+// alternative's alone, where a Variant sends a tag BYTE first. For messages a receiver tells apart
+// by what arrives -- a bare INT saying `finish` against a whole matrix of REALs, whose lengths
+// differ -- without a header word in front of the long one. The simulator delivers which
+// alternative was sent (the value's index); a program for real transputers needs the lengths to
+// tell, or a Variant.
+template <class... Alternatives>
+struct Untagged {};
+
+template <class... Alternatives>
+struct protocol<Untagged<Alternatives...>> {
+  static_assert((protocol<Alternatives>::single && ...),
+                "an untagged protocol's alternatives are each one communication (primitives, "
+                "arrays, blocks, packed)");
+  using value_type = std::variant<typename protocol<Alternatives>::value_type...>;
+  static constexpr bool single = true;
+  static std::int64_t bytes(const value_type& v) {
+    return bytes_of(v, std::index_sequence_for<Alternatives...>{});
+  }
+  static std::string name() {
+    std::string s;
+    ((s += (s.empty() ? "" : " | ") + protocol<Alternatives>::name()), ...);
+    return "UNTAGGED (" + s + ")";
+  }
+  // A link fault's changed byte lands in the alternative sent.
+  static bool flip(value_type& v, std::int64_t byte, std::uint8_t mask) {
+    return flip_of(v, byte, mask, std::index_sequence_for<Alternatives...>{});
+  }
+  static void send(detail::Wire& w, const value_type& v) { detail::send_whole<protocol>(w, v); }
+  static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
+
+ private:
+  // By the value's index, not its type: two alternatives may hold the same C++ type.
+  template <std::size_t... I>
+  static std::int64_t bytes_of(const value_type& v, std::index_sequence<I...>) {
+    std::int64_t n = 0;
+    ((v.index() == I ? void(n = protocol<Alternatives>::bytes(std::get<I>(v))) : void()), ...);
+    return n;
+  }
+  template <std::size_t... I>
+  static bool flip_of(value_type& v, std::int64_t byte, std::uint8_t mask,
+                      std::index_sequence<I...>) {
+    bool changed = false;
+    ((v.index() == I ? void(changed = protocol<Alternatives>::flip(std::get<I>(v), byte, mask))
+                     : void()),
+     ...);
+    return changed;
   }
 };
 

@@ -41,13 +41,13 @@ constexpr float kFar = 1e30f;
 constexpr float kLight[3] = {-0.40824829f, 0.81649658f, -0.40824829f};
 constexpr int kColours = 3;
 
-// The plain value of a scalar (the float a Real32 computed).
+// The plain value of a scalar as a float (the float a Real32 computed; a REAL64's rounded).
 template <class S>
 float plain(const S& x) {
-  if constexpr (std::is_same_v<S, float>)
-    return x;
+  if constexpr (std::is_floating_point_v<S>)
+    return float(x);
   else
-    return x.value();
+    return float(x.value());
 }
 
 // What the PROC is given: the scene's arrays (in the worker's memory, loaded once) and the screen

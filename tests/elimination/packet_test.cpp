@@ -27,6 +27,31 @@ TEST(PipelinePacket, ARowIsItsHeaderWordAndItsReals) {
   EXPECT_TRUE(M::pivot_of(M::to_packet(0, M::Pivot::stop(true))).finish);
 }
 
+// The client's system, by hand: n(n + 1) REAL32s (n = 2: 6 of them, 24 bytes) and no header word;
+// finish a bare INT (4 bytes). L1 gets back each row and its right-hand side.
+TEST(PipelinePacket, TheSystemIsItsRealsAloneAndFinishAWord) {
+  elimination::LinearSystem<float> s;
+  s.a = {{1.0f, 2.0f}, {3.0f, 4.0f}};
+  s.b = {5.0f, 6.0f};
+  EXPECT_EQ(t800sim::wire_bytes<M::System>(M::system(s)), 6 * 4);
+  EXPECT_EQ(t800sim::wire_bytes<M::System>(M::finish()), 4);
+  EXPECT_FALSE(M::system_of(M::finish()).has_value());
+  const auto back = M::system_of(M::system(s));
+  ASSERT_TRUE(back.has_value());
+  ASSERT_EQ(back->size(), 2u);
+  EXPECT_EQ(back->a[1][0].value(), 3.0f);
+  EXPECT_EQ(back->a[0][1].value(), 2.0f);
+  EXPECT_EQ(back->b[0].value(), 5.0f);
+  EXPECT_EQ(back->b[1].value(), 6.0f);
+  // REAL64: 8 bytes each.
+  elimination::LinearSystem<double> d;
+  d.a = {{1.0}};
+  d.b = {2.0};
+  EXPECT_EQ(t800sim::wire_bytes<workloads::levels::Messages<double>::System>(
+                workloads::levels::Messages<double>::system(d)),
+            2 * 8);
+}
+
 // A pivot row with the scale (step 0, growth check): one more REAL, and it comes back apart.
 TEST(PipelinePacket, APivotRowCarriesTheScaleAsItsLastReal) {
   M::Pivot pivot;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <tuple>
 
 #include "network/faults.hpp"
 #include "sdk_fixtures.hpp"
@@ -53,9 +54,12 @@ struct Rounds {
 
 const std::vector<double> kShared{0.5, -3.0, 1024.25};
 
+const std::vector<std::string> kFiveWorkers{"P1", "P2", "P3", "P4", "P5"};
+
 // A master on P0 calling three rounds, then finish, on a tree of 5 workers (P4 and P5 are not P0's
 // neighbours: their channels are routed).
-Rounds run_toy(const FarmOptions& options, const std::vector<network::FaultSpec>& faults = {}) {
+Rounds run_toy(const FarmOptions& options, const std::vector<network::FaultSpec>& faults = {},
+               const std::vector<std::string>& workers = kFiveWorkers) {
   Rounds out;
   ToyFarm farm(toy_tasks(), toy_work, options);
   const network::Topology topology =
@@ -75,7 +79,7 @@ Rounds run_toy(const FarmOptions& options, const std::vector<network::FaultSpec>
        farm.finish(p);
        out.lost = farm.lost_workers();
      }).placed_on("P0");
-    farm.build(b, "master", {"P1", "P2", "P3", "P4", "P5"});
+    farm.build(b, "master", workers);
   });
   const workloads::Params params;
   const workloads::Placement placement;
@@ -142,6 +146,52 @@ INSTANTIATE_TEST_SUITE_P(Each, ToyFarmSchedules,
                          ::testing::Values(FarmSchedule::static_list, FarmSchedule::on_demand,
                                            FarmSchedule::explicit_allocation),
                          schedule_name);
+
+// The on-demand master either way (a PAR of dialogues or one ALT), results sent directly or through
+// a buffer, tasks longest first or in order: the same exact sums, each task once.
+class ToyFarmOnDemand : public ::testing::TestWithParam<std::tuple<bool, bool, bool>> {};
+
+TEST_P(ToyFarmOnDemand, EveryRoundGivesTheClosedFormSums) {
+  FarmOptions o = with(FarmSchedule::on_demand);
+  std::tie(o.alt_master, o.buffered_replies, o.longest_first) = GetParam();
+  const Rounds r = run_toy(o);
+  ASSERT_TRUE(r.blocked.empty());
+  expect_exact(r);
+  expect_each_task_once(r);
+}
+
+INSTANTIATE_TEST_SUITE_P(AltBufferedLongestFirst, ToyFarmOnDemand,
+                         ::testing::Combine(::testing::Bool(), ::testing::Bool(),
+                                            ::testing::Bool()));
+
+// Task i loops i + 1 times, so the tasks' costs grow with i: one worker runs them from t11 down
+// longest first, from t0 up in order.
+std::vector<int> one_workers_tasks(bool longest_first) {
+  FarmOptions o = with(FarmSchedule::on_demand);
+  o.alt_master = true;
+  o.longest_first = longest_first;
+  const Rounds r = run_toy(o, {}, {"P1"});
+  EXPECT_TRUE(r.blocked.empty());
+  return r.done_by.front().front();
+}
+
+TEST(ToyFarm, OnDemandTasksGoLongestFirst) {
+  std::vector<int> down;
+  for (int t = kTasks - 1; t >= 0; --t) down.push_back(t);
+  EXPECT_EQ(one_workers_tasks(true), down);
+}
+
+TEST(ToyFarm, OnDemandTasksGoInTheirOrder) {
+  std::vector<int> up;
+  for (int t = 0; t < kTasks; ++t) up.push_back(t);
+  EXPECT_EQ(one_workers_tasks(false), up);
+}
+
+TEST(ToyFarm, OnDemandSettingsWithAStaticScheduleAreAnError) {
+  FarmOptions o = with(FarmSchedule::static_list);
+  o.alt_master = true;
+  EXPECT_THROW(ToyFarm(toy_tasks(), toy_work, o), std::invalid_argument);
+}
 
 TEST(ToyFarm, AnExplicitAllocationIsFollowed) {
   const Rounds r = run_toy(with(FarmSchedule::explicit_allocation));

@@ -117,6 +117,43 @@ TEST(Protocol, ALinkFaultChangesTheValueOfAPackedMessageItCarries) {
   EXPECT_EQ(std::any_cast<value_of<P>>(carried), (value_of<P>{3, {-1.0}}));
 }
 
+// An untagged protocol: one communication of the chosen alternative's bytes and nothing else (no
+// tag byte, as a Variant sends): a bare INT is 4 bytes, six REAL32s 24, two REAL64s 16.
+TEST(Protocol, AnUntaggedProtocolSendsTheAlternativeAloneAsOneCommunication) {
+  using P = Untagged<INT, Block<REAL32>>;
+  const value_of<P> finish(std::in_place_index<0>, 7);
+  const value_of<P> matrix(std::in_place_index<1>, std::vector<float>{1, 2, 3, 4, 5, 6});
+  EXPECT_EQ(round_trip<P>(finish), std::make_pair(std::vector<std::int64_t>{4}, finish));
+  EXPECT_EQ(round_trip<P>(matrix), std::make_pair(std::vector<std::int64_t>{24}, matrix));
+  EXPECT_EQ((wire_bytes<Untagged<INT, Block<REAL64>>>(
+                value_of<Untagged<INT, Block<REAL64>>>(std::in_place_index<1>, {1.0, 2.0}))),
+            16);
+  EXPECT_EQ(protocol<P>::name(), "UNTAGGED (INT | ANY ([]REAL32))");
+}
+
+// Two alternatives of one C++ type stay apart: which was sent is the value's index, and the bytes
+// are that alternative's (an INT16 is 2 bytes, an [2]INT16 4).
+TEST(Protocol, AnUntaggedProtocolKeepsAlternativesOfOneTypeApart) {
+  using P = Untagged<INT16, INT16, Array<INT16, 2>>;
+  const value_of<P> second(std::in_place_index<1>, INT16(5));
+  const auto [sizes, got] = round_trip<P>(second);
+  EXPECT_EQ(sizes, std::vector<std::int64_t>{2});
+  EXPECT_EQ(got.index(), 1u);
+  EXPECT_EQ(std::get<1>(got), 5);
+  EXPECT_EQ(wire_bytes<P>(value_of<P>(std::in_place_index<2>, std::array<INT16, 2>{1, 2})), 4);
+}
+
+// A link fault's changed byte lands in the alternative sent: 2.0f is 0x40000000, and its byte 3 of
+// the second REAL32 (message byte 7) XOR 0x80 makes it -2.0f.
+TEST(Protocol, ALinkFaultChangesTheAlternativeOfAnUntaggedMessage) {
+  using P = Untagged<INT, Block<REAL32>>;
+  RecordingWire w;
+  protocol<P>::send(w, value_of<P>(std::in_place_index<1>, std::vector<float>{1.0f, 2.0f}));
+  std::any carried = w.values.at(0);
+  ASSERT_TRUE(t800::flip_payload_byte(carried, 7, 0x80));
+  EXPECT_EQ(std::get<1>(std::any_cast<value_of<P>>(carried)), (std::vector<float>{1.0f, -2.0f}));
+}
+
 // A value of another protocol arriving is a program error, not a silent reinterpretation.
 TEST(Protocol, AValueOfAnotherProtocolIsAnError) {
   RecordingWire w;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "network/families.hpp"
+#include "network/faults.hpp"
 #include "network/machine.hpp"
 #include "sdk/program_workload.hpp"
 #include "t800sim/alt.hpp"
@@ -20,6 +21,7 @@ inline network::Topology chain(int workers) {
 
 struct Outcome {
   std::vector<network::BlockedProcess> blocked;
+  std::vector<network::FaultRecord> faults;  // what each injected fault did
   workloads::ResultValue results;
   double simulated_us = 0;
 };
@@ -27,10 +29,13 @@ struct Outcome {
 // Takes ownership of the program; `program` stays usable for reading what it recorded.
 template <class P>
 Outcome run(P* program, const network::Topology& topology,
-            const workloads::Placement& placement = {}) {
+            const workloads::Placement& placement = {},
+            const std::vector<network::FaultSpec>& faults = {}) {
   network::MachineOptions options;
   options.link.speed_mbps = 20;
   network::Machine machine(topology, options);
+  for (const network::FaultSpec& f : faults) machine.faults().add(f);
+  network::arm_faults(machine);
   const workloads::Params params;
   const workloads::WorkloadContext context{params, topology, nullptr, &placement};
   t800sim::detail::ProgramWorkload workload("test", std::unique_ptr<t800sim::Program>(program),
@@ -39,6 +44,7 @@ Outcome run(P* program, const network::Topology& topology,
   Outcome o;
   o.blocked = machine.run();
   o.simulated_us = machine.simulated_us();
+  o.faults = machine.faults().records();
   if (o.blocked.empty()) o.results = workload.results(machine);
   return o;
 }

@@ -1,5 +1,6 @@
 #include "workloads/pipeline/pipeline_program.hpp"
 
+#include <functional>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
@@ -33,17 +34,17 @@ int require_node(const network::Topology& t, const std::string& name, const std:
 
 int level2_count(const network::Topology& t) {
   int m = 0;
-  while (t.find("E" + std::to_string(m + 1)) >= 0) ++m;
+  while (t.find(PipelineNodes::level2_name(m)) >= 0) ++m;
   return m;
 }
 
 PipelineNodes find_pipeline_nodes(const network::Topology& t, int m) {
   PipelineNodes nodes;
-  nodes.l1 = require_node(t, "L1", "level 1");
-  nodes.l3 = require_node(t, "L3", "level 3");
-  nodes.l4 = require_node(t, "L4", "level 4");
-  for (int e = 1; e <= m; ++e)
-    nodes.e.push_back(require_node(t, "E" + std::to_string(e), "a level-2 processor"));
+  nodes.l1 = require_node(t, PipelineNodes::kLevel1, "level 1");
+  nodes.l3 = require_node(t, PipelineNodes::kLevel3, "level 3");
+  nodes.l4 = require_node(t, PipelineNodes::kLevel4, "level 4");
+  for (int e = 0; e < m; ++e)
+    nodes.e.push_back(require_node(t, PipelineNodes::level2_name(e), "a level-2 processor"));
   return nodes;
 }
 
@@ -80,24 +81,30 @@ class PipelineProgram<T>::Levels {
       level2_.push_back(std::make_unique<levels::Level2<T>>(context, e));
     level3_ = std::make_unique<levels::Level3<T>>(context, longest_message_us);
     level4_ = std::make_unique<levels::Level4<T>>(context);
-    const auto low = t800::Priority::low;
-    machine.spawn(nodes.l1, "level1", low, [this](Process& p) {
-      levels::loop(serve_, p, [this](Process& q) { return level1_->round(q); });
+    // Each level a process of the SDK (t800sim::Process) on its processor.
+    auto spawn = [&machine](int node, const char* name,
+                            std::function<void(t800sim::Process&)> body) {
+      machine.spawn(node, name, t800::Priority::low, [body](Process& p) {
+        t800sim::Process level(p);
+        body(level);
+      });
+    };
+    using SdkProcess = t800sim::Process;
+    spawn(nodes.l1, "level1", [this](SdkProcess& p) {
+      levels::loop(serve_, p, [this](SdkProcess& q) { return level1_->round(q); });
     });
     for (int e = 0; e < shape.m; ++e)
-      machine.spawn(nodes.e[std::size_t(e)], "level2", low, [this, e](Process& p) {
+      spawn(nodes.e[std::size_t(e)], "level2", [this, e](SdkProcess& p) {
         levels::Level2<T>& level = *level2_[std::size_t(e)];
-        t800sim::Process level2(p);
-        if (settings.recovery) return level.checked(level2);
-        levels::loop(serve_, level2, [&level](t800sim::Process& q) { return level.round(q); });
+        if (settings.recovery) return level.checked(p);
+        levels::loop(serve_, p, [&level](SdkProcess& q) { return level.round(q); });
       });
-    machine.spawn(nodes.l3, "level3", low, [this](Process& p) {
+    spawn(nodes.l3, "level3", [this](SdkProcess& p) {
       if (settings.recovery) return void(level3_->checked(p));
-      levels::loop(serve_, p, [this](Process& q) { return level3_->round(q); });
+      levels::loop(serve_, p, [this](SdkProcess& q) { return level3_->round(q); });
     });
-    machine.spawn(nodes.l4, "level4", low, [this](Process& p) {
-      t800sim::Process level4(p);
-      levels::loop(serve_, level4, [this](t800sim::Process& q) { return level4_->round(q); });
+    spawn(nodes.l4, "level4", [this](SdkProcess& p) {
+      levels::loop(serve_, p, [this](SdkProcess& q) { return level4_->round(q); });
     });
     declare_code(machine);
   }
@@ -165,9 +172,7 @@ class PipelineProgram<T>::Levels {
       throw std::logic_error("elimination pipeline: send after a failed round or finish");
     report_.begin_round();
     report_.outcome.input_start_us = p.now_us();
-    typename M::Input input(elimination::convert<C>(system));
-    const std::int64_t bytes = M::bytes(input);
-    p.out(*wiring_.input, levels::message(std::move(input), bytes, "system"));
+    t800sim::Process(p).out(system_out(), M::system(system), "system");
     if (serve_ == Serve::once) stopped_ = true;  // the levels take one system and end
   }
 
@@ -183,8 +188,7 @@ class PipelineProgram<T>::Levels {
   void finish(Process& p) {
     if (stopped_) return;
     stopped_ = true;
-    const typename M::Input none;
-    p.out(*wiring_.input, levels::message(none, M::bytes(none), "finish"));
+    t800sim::Process(p).out(system_out(), M::finish(), "finish");
   }
 
   const PipelineOutcome& outcome() const { return report_.outcome; }
@@ -195,6 +199,9 @@ class PipelineProgram<T>::Levels {
 
  private:
   int n() const { return shape.n; }
+  t800sim::Out<typename M::System> system_out() const {
+    return t800sim::Out<typename M::System>(wiring_.typed(wiring_.input));
+  }
 
   Serve serve_ = Serve::once;
   bool stopped_ = false;  // the client's view: no more rounds

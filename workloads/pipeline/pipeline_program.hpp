@@ -63,6 +63,11 @@ struct PipelineOutcome {
 struct PipelineNodes {
   int l1 = -1, l3 = -1, l4 = -1;
   std::vector<int> e;
+
+  static constexpr const char* kLevel1 = "L1";
+  static constexpr const char* kLevel3 = "L3";
+  static constexpr const char* kLevel4 = "L4";
+  static std::string level2_name(int e) { return "E" + std::to_string(e + 1); }  // 0-based e
 };
 // The number of consecutive level-2 processors E1, E2, ... the topology has.
 int level2_count(const network::Topology& topology);

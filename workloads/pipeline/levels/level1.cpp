@@ -1,7 +1,6 @@
 #include "workloads/pipeline/levels/level1.hpp"
 
 #include <algorithm>
-#include <any>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -12,7 +11,7 @@ namespace workloads::levels {
 
 template <class T>
 bool Level1<T>::round(Process& p) {
-  auto input = std::any_cast<typename M::Input>(p.in(*c_.wiring.input).payload);
+  const auto input = M::system_of(p.in(c_.system_in()));
   if (!input) {
     send_stop(p, 0, true);
     return false;
@@ -237,9 +236,8 @@ void Level1<T>::hand_out_checked(Process& p, int k, std::vector<std::size_t> row
     branches.push_back([this, e, k, forwarder, growth_check, &given](Process& q) {
       typename M::CheckedPivot pivot = pivot_;
       pivot.forward = forwarder;
-      t800sim::Process sdk(q);
       const auto c = c_.checked_out(c_.wiring.e_in[std::size_t(e)]);
-      if (!sdk.out_or_fail(c, M::to_checked(pivot, growth_check), deadline(q), "pivot row")) {
+      if (!q.out_or_fail(c, M::to_checked(pivot, growth_check), deadline(q), "pivot row")) {
         unused_[std::size_t(e)] = true;
         return;
       }
@@ -247,7 +245,7 @@ void Level1<T>::hand_out_checked(Process& p, int k, std::vector<std::size_t> row
         typename M::CheckedRow row{k, i, false, matrices_[std::size_t(k)][i], 0};
         row.checksum = row.sum();
         c_.charge_checksum(q, row.values.size());
-        if (!sdk.out_or_fail(c, M::to_checked(row), deadline(q), "row")) {
+        if (!q.out_or_fail(c, M::to_checked(row), deadline(q), "row")) {
           unused_[std::size_t(e)] = true;
           return;
         }
@@ -261,10 +259,9 @@ void Level1<T>::hand_out_checked(Process& p, int k, std::vector<std::size_t> row
 template <class T>
 bool Level1<T>::next_matrix_checked(Process& p, int k) {
   using ReturnedRow = typename M::ReturnedRow;
-  t800sim::Process sdk(p);
   const auto back = c_.checked_in(c_.wiring.back);
   for (;;) {
-    const typename M::CheckedValue m = sdk.in(back);
+    const typename M::CheckedValue m = p.in(back);
     if (M::is_resend(m)) {
       const typename M::Resend request = M::resend_of(m);
       for (int e : request.lost)
@@ -281,7 +278,7 @@ bool Level1<T>::next_matrix_checked(Process& p, int k) {
     Rows& reduced = matrices_[std::size_t(k)];
     reduced = {std::move(first.values)};
     for (int i = 1; i < c_.n() - k; ++i) {
-      ReturnedRow row = M::returned_row_of(sdk.in(back));
+      ReturnedRow row = M::returned_row_of(p.in(back));
       if (!row.ok) return false;
       reduced.push_back(std::move(row.values));
     }
@@ -298,13 +295,12 @@ void Level1<T>::stop_level2(Process& p) {
     branches.push_back([this, e](Process& q) {
       typename M::CheckedPivot stop;
       stop.stop = true;
-      if (t800sim::Process(q).out_or_fail(c_.checked_out(c_.wiring.e_in[std::size_t(e)]),
-                                          M::to_checked(stop, false), deadline(q), "stop"))
+      if (q.out_or_fail(c_.checked_out(c_.wiring.e_in[std::size_t(e)]), M::to_checked(stop, false),
+                        deadline(q), "stop"))
         return;
-      network::Machine& m = q.machine();
-      const std::vector<int> path{c_.nodes.l1, c_.nodes.e[std::size_t(e)]};
-      if (m.faults().detected(m, path, "level 1 (its stop was not taken)") > 0)
-        m.faults().recovered(m, path, "none needed: the solve no longer depended on it");
+      const std::vector<std::string> path = Context<T>::path(true, e, false);
+      if (q.fault_detected(path, "level 1 (its stop was not taken)") > 0)
+        q.fault_recovered(path, "none needed: the solve no longer depended on it");
     });
   par(p, branches);
 }

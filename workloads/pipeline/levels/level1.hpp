@@ -4,6 +4,8 @@
 // matrix back from L3 for the next step. With overlap a receiver in PAR stores the rows L3 streams
 // back while the steps go on; with recovery every message carries a checksum, L1's outputs give up
 // at a deadline, and L1 resends what L3 asks for through the level-2 processors it still uses.
+// A process of the SDK (t800sim::Process): the system comes as Messages::System, the rows go as
+// packets; the steps and the receiver share the matrices through a t800sim::Shared.
 #pragma once
 
 #include <vector>

@@ -2,9 +2,8 @@
 // leading element and sends them on to L3; E1 also forwards the pivot row. Buffered
 // (PipelineSettings::buffered), it runs an input process, the eliminator and an output process in
 // PAR, joined by one-row buffers. With recovery it checks each message's checksum and sends every
-// row on with its own. Strict, overlapped and buffered it is a process of the SDK
-// (t800sim::Process, typed In/Out of Messages::Packet); recovery's loop still runs on the
-// simulator's process.
+// row on with its own. A process of the SDK (t800sim::Process, typed In/Out of Messages::Packet,
+// with recovery Messages::Checked); the buffers are a t800sim::Shared.
 #pragma once
 
 #include <vector>

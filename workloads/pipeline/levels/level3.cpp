@@ -93,7 +93,6 @@ void Level3<T>::take_rows(std::vector<Process::Body>& branches, int k, Rows& row
 
 template <class T>
 void Level3<T>::collect(Process& p, int k, Pivot& pivot, bool unstable, Rows& rows) {
-  using RowMessage = typename M::RowMessage;
   pivot.unstable = unstable;
   std::vector<Process::Body> branches{[&](Process& q) { to_l4(q, k, pivot, "U row"); }};
   std::vector<int> arrived(rows.size(), 0);
@@ -108,7 +107,6 @@ void Level3<T>::collect(Process& p, int k, Pivot& pivot, bool unstable, Rows& ro
 // then gives no q̈) instead of stopping level 2 mid-step.
 template <class T>
 void Level3<T>::stream(Process& p, int k, Pivot& pivot, C bound, bool& unstable) {
-  using RowMessage = typename M::RowMessage;
   const std::size_t r = static_cast<std::size_t>(c_.n() - 1 - k);
   Rows rows(r);
   std::vector<std::size_t> ready;  // indices in arrival order
@@ -206,8 +204,7 @@ bool Level3<T>::collect_checked(Process& p, int k, CheckedPivot& pivot, Rows& ro
     };
     if (request) {
       par(p, {[&](Process& q) {
-                t800sim::Process(q).out(c_.checked_out(c_.wiring.back), M::to_checked(*request),
-                                        "resend");
+                q.out(c_.checked_out(c_.wiring.back), M::to_checked(*request), "resend");
               },
               receive});
     } else {
@@ -217,20 +214,17 @@ bool Level3<T>::collect_checked(Process& p, int k, CheckedPivot& pivot, Rows& ro
     std::vector<std::size_t> missing;
     for (std::size_t i = 0; i < have.size(); ++i)
       if (!have[i]) missing.push_back(i);
-    network::Machine& machine = p.machine();
     if (missing.empty()) {
       if (round > 0)
         for (int e = 0; e < m; ++e)
-          machine.faults().recovered(machine, path_through(e),
-                                     "level 1 resent step " + std::to_string(k) +
-                                         "'s rows through other level-2 processors");
+          p.fault_recovered(path_through(e), "level 1 resent step " + std::to_string(k) +
+                                                 "'s rows through other level-2 processors");
       return true;
     }
     const std::string what = std::to_string(missing.size()) + " of step " + std::to_string(k) +
                              "'s messages " + (damaged.empty() ? "missing" : "damaged or missing");
     for (int e = 0; e < m; ++e)
-      machine.faults().detected(machine, path_through(e),
-                                "level 3 (" + what + ": checksum, ALT timeout)");
+      p.fault_detected(path_through(e), "level 3 (" + what + ": checksum, ALT timeout)");
     if (idle > m) return false;
     request = Resend{missing, {}, damaged};
     for (int e = 0; e < m; ++e)
@@ -250,9 +244,8 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
   const int m = c_.shape.m;
   const auto ticks = std::int64_t(std::ceil(c_.settings.timeout_us / p.tick_us()));
   std::int64_t after = p.clock() + std::int64_t(std::ceil(first_wait_us / p.tick_us()));
-  t800sim::Process sdk(p);
   while (std::find(have.begin(), have.end(), false) != have.end()) {
-    t800sim::Alt alt(sdk);
+    t800sim::Alt alt(p);
     std::optional<typename M::CheckedValue> received;
     for (int e = 0; e < m; ++e)
       alt.input_or_fail(
@@ -296,7 +289,7 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
 template <class T>
 void Level3<T>::send_back(Process& p, const typename M::ReturnedRow& row, const char* label) const {
   if (c_.settings.recovery)
-    t800sim::Process(p).out(c_.checked_out(c_.wiring.back), M::to_checked(row), label);
+    p.out(c_.checked_out(c_.wiring.back), M::to_checked(row), label);
   else
     c_.send(p, c_.wiring.back, M::to_packet(row), label);
 }
@@ -307,8 +300,8 @@ void Level3<T>::to_l4(Process& p, int k, const Pivot& pivot, const char* label) 
 }
 
 template <class T>
-std::vector<int> Level3<T>::path_through(int e) const {
-  return {c_.nodes.l1, c_.nodes.e[std::size_t(e)], c_.nodes.l3};
+std::vector<std::string> Level3<T>::path_through(int e) const {
+  return Context<T>::path(true, e, true);
 }
 
 template class Level3<float>;

@@ -2,11 +2,13 @@
 // (and, with the growth check, how much the pivots have grown), returns the reduced matrix to L1
 // row by row, and passes each pivot row (a row of U) on to L4. With overlap it streams each row
 // back as it arrives; with recovery it waits for a step's rows in an ALT with a timer guard and
-// asks L1 to resend what is missing or damaged.
+// asks L1 to resend what is missing or damaged, reporting what it detects and recovers from to the
+// run's fault report. A process of the SDK (t800sim::Process).
 #pragma once
 
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "workloads/pipeline/levels/context.hpp"
@@ -44,7 +46,7 @@ class Level3 {
                     std::vector<int>& damaged, double first_wait_us);
   // A step's check found the growth above the limit: the first time, it is reported.
   void unstable_at(int k, bool& unstable);
-  std::vector<int> path_through(int e) const;
+  std::vector<std::string> path_through(int e) const;
   void send_back(Process& p, const typename M::ReturnedRow& row, const char* label) const;
   // Step k's pivot row (a row of U), or a stop, to L4 over its typed channel.
   void to_l4(Process& p, int k, const Pivot& pivot, const char* label) const;

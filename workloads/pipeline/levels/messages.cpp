@@ -1,5 +1,8 @@
 #include "workloads/pipeline/levels/messages.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace workloads::levels {
 
 namespace {
@@ -16,6 +19,25 @@ std::uint32_t header_of(std::int32_t word) {
   return std::uint32_t(word);
 }
 }  // namespace
+
+template <class T>
+auto Messages<T>::system_of(const SystemValue& v) -> std::optional<elimination::LinearSystem<C>> {
+  if (v.index() == 0) return std::nullopt;
+  const std::vector<T>& values = std::get<1>(v);
+  // n(n + 1) values: n is the root of n^2 + n - size = 0.
+  std::size_t n = 0;
+  while ((n + 1) * (n + 2) <= values.size()) ++n;
+  if (n * (n + 1) != values.size())
+    throw std::logic_error("elimination pipeline: a system of " + std::to_string(values.size()) +
+                           " REALs is no n(n + 1)");
+  elimination::LinearSystem<C> s;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto row = values.begin() + std::ptrdiff_t(i * (n + 1));
+    s.a.emplace_back(row, row + std::ptrdiff_t(n));
+    s.b.emplace_back(row[std::ptrdiff_t(n)]);
+  }
+  return s;
+}
 
 template <class T>
 auto Messages<T>::to_checked(const CheckedPivot& pivot, bool growth_check) -> CheckedValue {

@@ -3,8 +3,8 @@
 // word (a row's number, a step, status flags) and the REALs (REAL32 for float, REAL64 for double),
 // with recovery's messages a checksum word after them (checksum.hpp). Strict and overlapped steps'
 // messages travel as a Packet over the SDK's typed channels (Packed<INT, Block<REAL>>), recovery's
-// as a Checked packet (Packed<INT, Block<REAL>, Block<INT>>), their bytes from the protocol; the
-// client's system still as the simulator's message, with its bytes from bytes().
+// as a Checked packet (Packed<INT, Block<REAL>, Block<INT>>), the client's system as a System
+// (Untagged<INT, Block<REAL>>): their bytes from the protocol.
 #pragma once
 
 #include <any>
@@ -13,7 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "t800/message.hpp"
 #include "t800sim/protocol.hpp"
 #include "workloads/dynamics/counted.hpp"
 #include "workloads/elimination/gauss.hpp"
@@ -21,9 +20,6 @@
 #include "workloads/pipeline/checksum.hpp"
 
 namespace workloads::levels {
-
-// One INT32 word in front of every row or matrix: the row's number (or the step) and a status flag.
-constexpr std::int64_t kHeaderBytes = 4;
 
 // The header word of a packet (Messages::Packet): a number (a row's, or a step) in the low bits,
 // status flags in the high ones, as the occam program's header word has them. A stop ends the
@@ -54,15 +50,25 @@ template <class T>
 struct Messages {
   using C = dynamics::Counted<T>;
   using Row = elimination::Row<C>;
-  static constexpr std::int64_t kReal = sizeof(T);  // REAL32 or REAL64
 
-  // The client's system (its REALs, no header), or nullopt: finish (a header word).
-  using Input = std::optional<elimination::LinearSystem<C>>;
-  static std::int64_t bytes(const Input& input) {
-    if (!input) return kHeaderBytes;
-    const auto n = static_cast<std::int64_t>(input->size());
-    return kReal * n * (n + 1);
+  // The client's system -- its n(n+1) REALs, row by row each followed by its right-hand side, no
+  // header word -- or finish, a bare INT. Untagged: the lengths tell the two apart, and a header
+  // word in front of the system would lengthen its input.
+  using System = t800sim::Untagged<t800sim::INT, t800sim::Block<T>>;
+  using SystemValue = t800sim::value_of<System>;
+  static SystemValue system(const elimination::LinearSystem<T>& s) {
+    std::vector<T> values;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      values.insert(values.end(), s.a[i].begin(), s.a[i].end());
+      values.push_back(s.b[i]);
+    }
+    return SystemValue(std::in_place_index<1>, std::move(values));
   }
+  static SystemValue finish() {
+    return SystemValue(std::in_place_index<0>, header::kStop | header::kFinish);
+  }
+  // The system as L1 computes with it, or nullopt: finish.
+  static std::optional<elimination::LinearSystem<C>> system_of(const SystemValue& v);
 
   // The messages of strict and overlapped steps, as the levels hold them; on the wire each is a
   // Packet (to_packet, and back).
@@ -207,12 +213,6 @@ struct Messages {
   static ReturnedRow returned_row_of(const CheckedValue& v);
   static Resend resend_of(const CheckedValue& v);
 };
-
-// The simulator's message carrying the client's system.
-template <class M>
-t800::Message message(M m, std::int64_t bytes, const std::string& label) {
-  return {bytes, std::move(m), label};
-}
 
 extern template struct Messages<float>;
 extern template struct Messages<double>;
