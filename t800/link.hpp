@@ -9,13 +9,14 @@
 // arriving (overlapped acknowledge), a T414 only after the whole packet. Both DMA engines run
 // concurrently with the CPUs.
 //
-// Fidelity (t800/fidelity.hpp): at `packet` every packet is an event. At `message` a message
-// follows the closed form of LinkTiming -- a handful of events per message instead of several per
-// byte -- which is exact while the other direction is silent. At `automatic` a message starts in
-// closed form only when the other direction is silent, and when the other direction starts
-// meanwhile, the message in flight is handed over to the packet level at that instant: its byte,
-// packet and acknowledge state is worked out from the closed form (hand_over), so the result is the
-// packet level's.
+// Fidelity (t800/fidelity.hpp): at `packet` every packet is simulated at its own time; its end is
+// an event only where another party can act on it (link.cpp, send_data_packet). At `message` a
+// message follows the closed form of LinkTiming -- a handful of events per message instead of
+// several per byte -- which is exact while the other direction is silent. At `automatic` a message
+// starts in closed form only when the other direction is silent, and when the other direction
+// starts meanwhile, the message in flight is handed over to the packet level at that instant: its
+// byte, packet and acknowledge state is worked out from the closed form (hand_over), so the result
+// is the packet level's.
 #pragma once
 
 #include <cstdint>
@@ -213,7 +214,7 @@ class Link : public sc_core::sc_module {
   // one, where nothing else can change what it starts (see link.cpp); false: woken as usual.
   bool start_at_once(int wire);
   void finish_packet(int wire);
-  bool start_packet(int wire);  // false: nothing to send now
+  bool start_packet(int wire);  // false: no wake needed (nothing sent, or its end settled)
   void carry(int wire, WirePacket packet, const sc_core::sc_time& start,
              const sc_core::sc_time& length);
   bool send_data_packet(int d);  // false: its end needs no wake
