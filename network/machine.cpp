@@ -201,12 +201,12 @@ void Machine::start_router(int node, int from, t800::Link& link, int end) {
 // largest frame of the PROCs each runs, plus the words below a process's workspace pointer the
 // scheduler uses), their arrays, the code of every PROC and library routine once.
 void Machine::place_memory() {
-  constexpr int kSchedulerWords = 5;  // Iptr, link, state, timer link and time below Wptr
+  constexpr int kSchedulerWords = 5;         // Iptr, link, state, timer link and time below Wptr
   constexpr int kUndeclaredFrameWords = 16;  // a process whose code was not declared (U)
   for (int node = 0; node < processors(); ++node) {
     t800::MemoryDemand demand;
     std::map<std::string, int> frame_words;  // per process: its largest frame
-    std::map<std::string, bool> code_seen;
+    std::map<std::string, std::size_t> code_index;  // a PROC's entry in demand.code
     std::map<std::string, int> array_bytes;
     std::vector<const t800::codegen::CodeUnit*> routines;
     const t800::ComputeModel& model = compute_models_[std::size_t(node)];
@@ -222,10 +222,14 @@ void Machine::place_memory() {
         }
       }
       frame_words[d.process] = std::max(frame_words[d.process], frame);
-      if (!code_seen[unit.name]) {
-        code_seen[unit.name] = true;
-        demand.code.push_back({unit.name, unit.code_bytes + unit.constant_bytes});
-      }
+      // Each PROC once, where it was first declared, as long as its longest recording: a recording
+      // holds the paths its run took, the PROC every path (a ray tracer's lines take different ones).
+      const int bytes = unit.code_bytes + unit.constant_bytes;
+      const auto [entry, first] = code_index.emplace(unit.name, demand.code.size());
+      if (first)
+        demand.code.push_back({unit.name, bytes});
+      else
+        demand.code[entry->second].bytes = std::max(demand.code[entry->second].bytes, bytes);
       // Arrays a PROC reaches through a pointer are its process's buffers (the message it
       // received, the results it sends): one of each name per process, as long as the longest.
       for (const t800::codegen::ArrayDecl& a : unit.arrays)
@@ -304,8 +308,9 @@ void Machine::prepare() {
 std::vector<BlockedProcess> Machine::run() {
   prepare();
   for (auto& pending : pending_)  // not a structured binding: clang 14 cannot capture those
-    handles_.push_back(sc_core::sc_spawn([p = pending.first, body = pending.second] { run_body(p, body); },
-                                         sc_core::sc_gen_unique_name("proc")));
+    handles_.push_back(
+        sc_core::sc_spawn([p = pending.first, body = pending.second] { run_body(p, body); },
+                          sc_core::sc_gen_unique_name("proc")));
   pending_.clear();
   elaboration_s_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
@@ -322,14 +327,15 @@ std::vector<BlockedProcess> Machine::run() {
     if (limit_ == Limit::none && !p->ended() && !p->daemon())
       blocked.push_back({p->name(), node_name(p->node()), p->status(), waits_for(*this, *p)});
   if (!blocked.empty()) wait_cycle_ = network::wait_cycle(*this);
-  end_threads();
+  if (tears_down()) end_threads();
   return blocked;
 }
 
 // The simulation in slices of simulated time, the wall clock read between them; a slice is doubled
-// while it takes under 20 ms of wall time and halved above 200 ms, so the clock is read a few times a
-// second whatever the model's speed. A slice runs every event up to and at its end, and reaches at
-// least the next pending event, so the slices run the same events in the same order as one sc_start.
+// while it takes under 20 ms of wall time and halved above 200 ms, so the clock is read a few times
+// a second whatever the model's speed. A slice runs every event up to and at its end, and reaches
+// at least the next pending event, so the slices run the same events in the same order as one
+// sc_start.
 void Machine::run_with_limits() {
   using sc_core::sc_time;
   const auto wall_start = std::chrono::steady_clock::now();
@@ -349,8 +355,10 @@ void Machine::run_with_limits() {
     }
     const std::uint64_t deltas = sc_core::sc_delta_count();
     const double before = wall_s();
-    sc_core::sc_start(std::min(std::max(slice, next), sim_limit - now), sc_core::SC_EXIT_ON_STARVATION);
-    if (sc_core::sc_time_stamp() == now && sc_core::sc_delta_count() == deltas) return;  // nothing moved
+    sc_core::sc_start(std::min(std::max(slice, next), sim_limit - now),
+                      sc_core::SC_EXIT_ON_STARVATION);
+    if (sc_core::sc_time_stamp() == now && sc_core::sc_delta_count() == deltas)
+      return;  // nothing moved
     if (options_.max_wall_s > 0 && wall_s() >= options_.max_wall_s) {
       if (sc_core::sc_pending_activity()) limit_ = Limit::wall_time;
       return;
@@ -362,10 +370,18 @@ void Machine::run_with_limits() {
 }
 
 // Threads still waiting when the run is over (the routers, idle pooled threads, the processes of a
-// deadlock) are killed, so that each unwinds its stack and frees what it holds. SystemC 2.3.4 cannot
-// kill from sc_main (it dereferences the current process, which there is none of), so a thread spawned
-// for the purpose does, in one more delta cycle at the same simulated time (after a limit, other
-// events are pending: they are not run).
+// deadlock) are killed, so that each unwinds its stack and frees what it holds. SystemC 2.3.4
+// cannot kill from sc_main (it dereferences the current process, which there is none of), so a
+// thread spawned for the purpose does, in one more delta cycle at the same simulated time (after a
+// limit, other events are pending: they are not run).
+bool Machine::tears_down() const {
+#if defined(__SANITIZE_ADDRESS__)
+  return true;
+#else
+  return options_.tear_down;
+#endif
+}
+
 void Machine::end_threads() {
   std::vector<sc_core::sc_process_handle> live;
   // Newest first: SystemC keeps its threads in a list it pushes at the front and searches from the
@@ -374,9 +390,11 @@ void Machine::end_threads() {
     if (h->valid() && !h->terminated()) live.push_back(*h);
   handles_.clear();
   if (live.empty()) return;
-  sc_core::sc_spawn([live]() mutable {
-    for (sc_core::sc_process_handle& h : live) h.kill();
-  }, sc_core::sc_gen_unique_name("end_threads"));
+  sc_core::sc_spawn(
+      [live]() mutable {
+        for (sc_core::sc_process_handle& h : live) h.kill();
+      },
+      sc_core::sc_gen_unique_name("end_threads"));
   sc_core::sc_start(sc_core::SC_ZERO_TIME);  // one delta cycle: nothing else is simulated
 }
 

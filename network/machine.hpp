@@ -30,14 +30,21 @@ struct MachineOptions {
   t800::LinkConfig link;  // default for connections without their own speed
   t800::Precision precision = t800::Precision::real64;
   double code_efficiency = 1.0;
-  bool checked = true;  // occam's run-time checks compiled into the generated code
+  bool checked = true;          // occam's run-time checks compiled into the generated code
   bool keep_intervals = false;  // for traces
   Fidelity fidelity;
-  // Limits (seconds; 0 = none): the run stops when its simulated time or the host's wall time reaches
-  // one, with processes still running (Machine::limit_reached says which).
+  // Limits (seconds; 0 = none): the run stops when its simulated time or the host's wall time
+  // reaches one, with processes still running (Machine::limit_reached says which).
   double max_sim_s = 0, max_wall_s = 0;
-  // Called by workloads that know how far they are (a trajectory: steps done of all), for a progress
-  // display; may be empty.
+  // After run(), end every process (their coroutine stacks unwound and freed) so that the Machine
+  // can be destroyed. A program that exits after its one simulation (SystemC runs one per process)
+  // leaves them standing and the Machine alive (workloads::run keeps it): the operating system
+  // reclaims it all at once. On a 1023-worker farm the teardown took two thirds of the command's
+  // wall time. A build with AddressSanitizer always tears down: its leak checker does not read the
+  // coroutine stacks, so what a standing process holds would be reported lost.
+  bool tear_down = true;
+  // Called by workloads that know how far they are (a trajectory: steps done of all), for a
+  // progress display; may be empty.
   std::function<void(std::int64_t done, std::int64_t total)> progress;
 };
 
@@ -71,6 +78,9 @@ class Machine {
   // Runs until every process has ended or nothing can happen any more; returns the processes left
   // blocked (empty on a clean end: a deadlock otherwise).
   std::vector<BlockedProcess> run();
+  // Whether run() ends the processes it leaves (MachineOptions::tear_down): if not, the Machine
+  // must outlive the program's use of SystemC.
+  bool tears_down() const;
   // Which limit stopped the run (MachineOptions::max_sim_s, max_wall_s), if one did.
   Limit limit_reached() const { return limit_; }
   // After a deadlock, the cycle of waits among the blocked processes, if they close one

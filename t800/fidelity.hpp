@@ -5,7 +5,7 @@
 // Links:   message   -- one closed form per message (t800/link_timing.hpp); exact while a link is
 // used in one
 //                       direction at a time, approximate when both directions overlap.
-//          packet    -- every data and acknowledge packet is an event on the wires (t800/link.hpp).
+//          packet    -- every data and acknowledge packet at its own time (t800/link.hpp).
 //          automatic -- closed form while the link is used one way; packets from the moment the
 //          other
 //                       direction starts, handing the message in flight over mid-way.

@@ -48,7 +48,7 @@ Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, Proces
   for (int d = 0; d < 2; ++d) {
     dir_[d].activity.merge_gaps_below(
         data_packet_);  // a trace shows a streaming message as one interval
-    sc_core::sc_spawn([this, d] { wire_thread(d); }, role("wire", d).c_str());
+    spawn_method([this, d] { on_wire(d); }, dir_[d].wire_wake, "wire", d);
     spawn_method([this, d] { on_detect(d); }, dir_[d].detect_event, "detect", d);
     spawn_method([this, d] { on_ack_processed(d); }, dir_[d].process_event, "ackproc", d);
     spawn_method([this, d] { on_closed_form(d); }, dir_[d].closed_form.milestone, "closedform", d);
@@ -126,8 +126,8 @@ bool Link::input_pending(int to) const {
   return d.submitted > d.taken;
 }
 
-void Link::DmaCount::add(std::int64_t n, const sc_time& at) {
-  if (queried && at == query_at && at == sc_time_stamp()) late += n;
+void Link::DmaCount::add(std::int64_t n, const sc_time& at, bool counted_first) {
+  if (!counted_first && queried && at == query_at && at == sc_time_stamp()) late += n;
   total += n;
   if (at > latest_at) {
     latest_at = at;
@@ -148,8 +148,10 @@ std::int64_t Link::dma_bytes(int e, bool including_now) const {
   std::int64_t n = including_now ? out.dma_sent.total + in.dma_received.total
                                  : out.dma_sent.before(now) + in.dma_received.before(now);
   if (now == SC_ZERO_TIME && !including_now) return n;
-  // Closed forms: the bytes started (sent) or arrived (received) by now, or strictly before now.
+  // Closed forms and a settled packet's byte: the bytes started (sent) or arrived (received) by
+  // now, or strictly before now.
   const sc_time until = including_now ? now : now - sc_core::sc_get_time_resolution();
+  if (in.arrival_pending && in.arrival_at <= until) ++n;
   if (out.closed_form.active && !out.closed_form.sender_done)
     n += bytes_started_by(out.closed_form, out.closed_form.bytes, until);
   if (in.closed_form.active && !in.closed_form.delivered && until >= data_packet_)
@@ -163,37 +165,99 @@ std::int64_t Link::dma_late(int e, const sc_time& t0) const {
 
 // ---- packet level ----
 
-void Link::wire_thread(int w) {
+void Link::on_wire(int w) {
+  const Direction& own = dir_[w];
+  if (own.carrying != WirePacket::none && sc_time_stamp() < own.wire_busy_until) {
+    // a packet started by start_at_once, and a wire_wake came before its end
+    return sc_core::next_trigger(own.wire_busy_until - sc_time_stamp());
+  }
+  finish_packet(w);
+  if (start_packet(w)) sc_core::next_trigger(dir_[w].wire_busy_until - sc_time_stamp());
+  // else: asleep until its wire_wake (the method's static sensitivity)
+}
+
+// The packet the wire was carrying has ended (the method was woken by its end).
+void Link::finish_packet(int w) {
+  Direction& own = dir_[w];
+  const WirePacket packet = own.carrying;
+  own.carrying = WirePacket::none;
+  switch (packet) {
+    case WirePacket::none:
+    case WirePacket::data_settled:
+    case WirePacket::ack_settled:
+      return;
+    case WirePacket::data:
+      return finish_data_packet(w, own.packet_start);
+    case WirePacket::ack:
+      return finish_ack_packet(w, own.packet_start);
+    case WirePacket::in_flight:
+      return finish_in_flight(w);
+  }
+}
+
+// What the wire does next, in order of precedence; true when it now carries a packet.
+bool Link::start_packet(int w) {
   Direction& own = dir_[w];
   for (;;) {
     if (own.wire_stop.now()) {  // a dead wire carries nothing more
       if (!own.queue.empty() && own.wire_stop.hit)
         own.wire_stop.hit("message '" + own.queue.front().label + "' not sent");
-      sc_core::wait(own.wire_wake);
-      continue;
+      return false;
     }
     const bool data_waiting = !own.queue.empty() && own.may_send && !own.closed_form.active &&
                               own.sent < own.queue.front().bytes;
     if (own.in_flight.active) {
+      const InFlight& packet = own.in_flight;
+      const sc_time end = packet.start + (packet.data ? data_packet_ : ack_packet_);
+      if (end > sc_time_stamp()) {
+        carry(w, WirePacket::in_flight, packet.start, end - packet.start);
+        return true;
+      }
       finish_in_flight(w);
     } else if (own.acks_pending > 0) {
-      send_ack_packet(w);
+      return send_ack_packet(w);
     } else if (data_waiting && own.sent == 0 && dir_[1 - w].closed_form.active &&
                fidelity_ == LinkFidelity::automatic) {
       hand_over(1 - w);  // this direction starts: the other's closed form no longer holds
     } else if (data_waiting && own.sent == 0 && closed_form_allowed(w)) {
       start_closed_form(w);
     } else if (data_waiting) {
-      send_data_packet(w);
+      return send_data_packet(w);
     } else {
-      sc_core::wait(own.wire_wake);
+      return false;
     }
   }
 }
 
-void Link::send_data_packet(int di) {
+// The wire's method, woken by wire_wake, would decide in the next delta at this instant. Deciding
+// now gives the same packet at the same time when nothing can change the decision in between: no
+// fault (a stop, a halted end), no resetch by a deadline, no packet handed over. The method is then
+// woken at the packet's end by a timed wire_wake (or earlier by another, and sleeps on).
+bool Link::start_at_once(int w) {
+  Direction& own = dir_[w];
+  if ((own.carrying == WirePacket::data_settled || own.carrying == WirePacket::ack_settled) &&
+      sc_time_stamp() >= own.wire_busy_until)
+    own.carrying = WirePacket::none;  // it has ended: nothing was left to do at its end
+  if (faulted_ || deadline_waits_ > 0 || own.carrying != WirePacket::none || own.in_flight.active ||
+      dir_[1 - w].in_flight.active)
+    return false;
+  if (start_packet(w)) own.wire_wake.notify(own.wire_busy_until - sc_time_stamp());
+  return true;
+}
+
+void Link::carry(int w, WirePacket packet, const sc_time& start, const sc_time& length) {
+  Direction& own = dir_[w];
+  own.carrying = packet;
+  own.packet_start = start;
+  own.wire_busy_until = start + length;
+}
+
+// A data packet's end is an event only where another party can act on it; see
+// data_end_settled_now.
+bool Link::send_data_packet(int di) {
   Direction& d = dir_[di];
   const sc_time start = sc_time_stamp();
+  settle_arrival(di);
   if (d.sent == 0) {  // the first byte of a message: both ends are now communicating
     d.receiving = true;
     d.incoming =
@@ -207,9 +271,37 @@ void Link::send_data_packet(int di) {
   d.may_send = false;
   apply_byte_fault(di);
   if (!d.byte_lost) d.detect_event.notify(detect_delay_);
-  d.wire_busy_until = start + data_packet_;
-  sc_core::wait(data_packet_);
-  finish_data_packet(di, start);
+  if (!data_end_settled_now(di)) {
+    carry(di, WirePacket::data, start, data_packet_);
+    return true;
+  }
+  carry(di, WirePacket::data_settled, start, data_packet_);
+  d.activity.packet(start, data_packet_, true);  // nothing else is recorded on this wire meanwhile
+  d.arrival_pending = true;
+  d.arrival_at = start + data_packet_;
+  return false;
+}
+
+// The arrival of a byte that is not its message's last changes only counts: the bytes received
+// (read at the last) and the DMA cycles (dma_bytes counts a pending arrival from its time). Not
+// with a fault (a byte may be lost), a deadline (resetch), a hand-over, or a T414 (its
+// acknowledge depends on the input being armed when the byte has arrived).
+bool Link::data_end_settled_now(int di) const {
+  const Direction& d = dir_[di];
+  const Direction& other = dir_[1 - di];
+  return !faulted_ && deadline_waits_ == 0 && detect_delay_ < data_packet_ &&
+         d.sent < d.incoming.bytes && !d.closed_form.active && !other.closed_form.active &&
+         !d.in_flight.active && !other.in_flight.active;
+}
+
+// The byte of a settled data packet arrives: what finish_data_packet would have done at its end,
+// which was at the start of that instant, before anything else then.
+void Link::settle_arrival(int di) {
+  Direction& d = dir_[di];
+  if (!d.arrival_pending) return;
+  d.arrival_pending = false;
+  ++d.received;
+  d.dma_received.add(1, d.arrival_at, true);
 }
 
 void Link::finish_data_packet(int di, const sc_time& start) {
@@ -222,13 +314,32 @@ void Link::finish_data_packet(int di, const sc_time& start) {
   on_byte_arrived(di);
 }
 
-void Link::send_ack_packet(int w) {
-  Direction& wire = dir_[w];
-  --wire.acks_pending;
+// An acknowledge's end is an event only where another party can act on it. It is settled when it
+// starts -- recorded, counted, and its processing scheduled -- when that end changes nothing
+// anyone else can see: it is not the message's last (whose end lets the sender go on), and the
+// wire's own direction is silent (nothing of its own recorded or labelled meanwhile). The wire
+// sleeps on; a wire_wake before the end finds it busy until then.
+bool Link::send_ack_packet(int w) {
+  --dir_[w].acks_pending;
   const sc_time start = sc_time_stamp();
-  wire.wire_busy_until = start + ack_packet_;
-  sc_core::wait(ack_packet_);
-  finish_ack_packet(w, start);
+  if (!ack_end_settled_now(w)) {
+    carry(w, WirePacket::ack, start, ack_packet_);
+    return true;
+  }
+  carry(w, WirePacket::ack_settled, start, ack_packet_);
+  dir_[w].activity.packet(start, ack_packet_, false);
+  Direction& d = dir_[1 - w];
+  ++d.acked;
+  d.process_event.notify(ack_packet_ + process_delay_);
+  return false;
+}
+
+bool Link::ack_end_settled_now(int w) const {
+  const Direction& own = dir_[w];
+  const Direction& d = dir_[1 - w];
+  return !faulted_ && deadline_waits_ == 0 && own.queue.empty() && !own.closed_form.active &&
+         !d.closed_form.active && !own.in_flight.active && !d.in_flight.active &&
+         !d.queue.empty() && d.acked + 1 < d.queue.front().bytes;
 }
 
 void Link::finish_ack_packet(int w, const sc_time& start) {
@@ -254,8 +365,6 @@ void Link::finish_ack_packet(int w, const sc_time& start) {
 void Link::finish_in_flight(int w) {
   Direction& own = dir_[w];
   const InFlight packet = own.in_flight;
-  const sc_time end = packet.start + (packet.data ? data_packet_ : ack_packet_);
-  if (end > sc_time_stamp()) sc_core::wait(end - sc_time_stamp());
   own.in_flight.active = false;
   if (!packet.data) return finish_ack_packet(w, packet.start);
   if (!packet.recorded) own.activity.packet(packet.start, data_packet_, true);
@@ -273,20 +382,31 @@ void Link::on_detect(int di) {
   }
 }
 
+// An acknowledge goes before its wire's own data, so starting it at once is the decision the wire
+// would make in the next delta.
 void Link::queue_ack(int di) {
   Direction& reverse = dir_[1 - di];
   ++reverse.acks_pending;
-  reverse.wire_wake.notify(SC_ZERO_TIME);
+  if (!start_at_once(1 - di)) reverse.wire_wake.notify(SC_ZERO_TIME);
 }
 
+// The next byte of the message may go. Its wire also carries the other direction's acknowledges,
+// which go first: it is sent at once only when no acknowledge can be queued at this instant (the
+// other direction receives nothing, and a T800's acknowledge is detected before its byte has
+// arrived) and it is a byte of the same message (a new one may start in closed form).
 void Link::on_ack_processed(int di) {
-  if (dir_[di].wire_stop.now()) return;
-  dir_[di].may_send = true;
-  dir_[di].wire_wake.notify(SC_ZERO_TIME);
+  Direction& d = dir_[di];
+  if (d.wire_stop.now()) return;
+  d.may_send = true;
+  const Direction& other = dir_[1 - di];
+  const bool no_ack_can_come = !other.receiving && !other.closed_form.active &&
+                               !d.closed_form.active && detect_delay_ < data_packet_;
+  if (!(d.sent > 0 && no_ack_can_come && start_at_once(di))) d.wire_wake.notify(SC_ZERO_TIME);
 }
 
 void Link::on_byte_arrived(int di) {
   Direction& d = dir_[di];
+  settle_arrival(di);
   ++d.received;
   d.dma_received.add(1, sc_time_stamp());
   // A T414 acknowledges after the whole packet: a byte taken by a waiting input is owed its
@@ -595,27 +715,33 @@ void Link::apply_byte_fault(int di) {
 bool Link::transmit(int from, Message message, const sc_time& deadline) {
   Direction& d = dir_[from];
   const std::int64_t ticket = submit(from, std::move(message));
+  ++deadline_waits_;
   while (d.completed < ticket) {
     if (sc_time_stamp() >= deadline) {
       reset_output(from);
+      --deadline_waits_;
       return false;
     }
     sc_core::wait(deadline - sc_time_stamp(), d.sent_event);
   }
+  --deadline_waits_;
   return true;
 }
 
 std::optional<Message> Link::receive(int to, const sc_time& deadline) {
   const int di = 1 - to;
   Direction& d = dir_[di];
+  ++deadline_waits_;
   arm_input(di);
   while (d.delivered.empty()) {
     if (sc_time_stamp() >= deadline) {
       reset_input(di);
+      --deadline_waits_;
       return std::nullopt;
     }
     sc_core::wait(deadline - sc_time_stamp(), d.delivered_event);
   }
+  --deadline_waits_;
   Message m = std::move(d.delivered.front());
   d.delivered.pop_front();
   ++d.taken;

@@ -9,13 +9,14 @@
 // arriving (overlapped acknowledge), a T414 only after the whole packet. Both DMA engines run
 // concurrently with the CPUs.
 //
-// Fidelity (t800/fidelity.hpp): at `packet` every packet is an event. At `message` a message
-// follows the closed form of LinkTiming -- a handful of events per message instead of several per
-// byte -- which is exact while the other direction is silent. At `automatic` a message starts in
-// closed form only when the other direction is silent, and when the other direction starts
-// meanwhile, the message in flight is handed over to the packet level at that instant: its byte,
-// packet and acknowledge state is worked out from the closed form (hand_over), so the result is the
-// packet level's.
+// Fidelity (t800/fidelity.hpp): at `packet` every packet is simulated at its own time; its end is
+// an event only where another party can act on it (link.cpp, send_data_packet). At `message` a
+// message follows the closed form of LinkTiming -- a handful of events per message instead of
+// several per byte -- which is exact while the other direction is silent. At `automatic` a message
+// starts in closed form only when the other direction is silent, and when the other direction
+// starts meanwhile, the message in flight is handed over to the packet level at that instant: its
+// byte, packet and acknowledge state is worked out from the closed form (hand_over), so the result
+// is the packet level's.
 #pragma once
 
 #include <cstdint>
@@ -118,7 +119,8 @@ class Link : public sc_core::sc_module {
     std::int64_t late_at(const sc_core::sc_time& t0) const {
       return queried && query_at == t0 ? late : 0;
     }
-    void add(std::int64_t n, const sc_core::sc_time& at);
+    // `counted_first`: as if counted at the start of instant `at`, before any query then.
+    void add(std::int64_t n, const sc_core::sc_time& at, bool counted_first = false);
     std::int64_t before(const sc_core::sc_time& now) const {
       return total - (latest_at == now ? latest : 0);
     }
@@ -159,6 +161,10 @@ class Link : public sc_core::sc_module {
     bool now() const { return armed && sc_core::sc_time_stamp() >= at; }
   };
 
+  // What a wire is carrying; its process is woken when the packet ends, except for a packet whose
+  // end was settled when it started (see send_data_packet, send_ack_packet).
+  enum class WirePacket { none, data, data_settled, ack, ack_settled, in_flight };
+
   // Every event and process of a link is named after its role and direction: SystemC would
   // otherwise generate a unique name for each (a search per name), a sixth of the set-up of a
   // 1024-transputer network.
@@ -183,8 +189,14 @@ class Link : public sc_core::sc_module {
     sc_core::sc_event delivered_event;
     // wire of this direction's data, and its pending acknowledges for the other direction
     int acks_pending = 0;
+    WirePacket carrying = WirePacket::none;  // until wire_busy_until
+    sc_core::sc_time packet_start;
     sc_core::sc_event wire_wake, detect_event, process_event;
     sc_core::sc_time wire_busy_until;  // end of the packet this wire carries
+    // A data packet whose end was settled when it started: its byte arrives at `arrival_at`,
+    // counted when the next packet starts (or now, by dma_bytes).
+    bool arrival_pending = false;
+    sc_core::sc_time arrival_at;
     InFlight in_flight;
     LinkActivity activity;
     ClosedForm closed_form;
@@ -195,10 +207,22 @@ class Link : public sc_core::sc_module {
     Stop wire_stop, deaf;
   };
 
-  void wire_thread(int wire);
-  void send_data_packet(int d);
+  // A wire is a method process (no stack of its own, no context switch per packet), woken by its
+  // wire_wake or by the end of the packet it carries.
+  void on_wire(int wire);
+  // Starts the wire's next packet at this very delta instead of waking its method for the next
+  // one, where nothing else can change what it starts (see link.cpp); false: woken as usual.
+  bool start_at_once(int wire);
+  void finish_packet(int wire);
+  bool start_packet(int wire);  // false: no wake needed (nothing sent, or its end settled)
+  void carry(int wire, WirePacket packet, const sc_core::sc_time& start,
+             const sc_core::sc_time& length);
+  bool send_data_packet(int d);  // false: its end needs no wake
+  bool data_end_settled_now(int d) const;
+  void settle_arrival(int d);
   void finish_data_packet(int d, const sc_core::sc_time& start);
-  void send_ack_packet(int wire);
+  bool send_ack_packet(int wire);  // false: its end needs no wake
+  bool ack_end_settled_now(int wire) const;
   void finish_ack_packet(int wire, const sc_core::sc_time& start);
   void finish_in_flight(int wire);
   // closed form
@@ -231,6 +255,7 @@ class Link : public sc_core::sc_module {
   void reset_output(int d);
   void reset_input(int d);
   bool faulted_ = false;
+  int deadline_waits_ = 0;  // OutputOrFail / InputOrFail waiting on this link
 
   LinkConfig config_;
   LinkFidelity fidelity_;

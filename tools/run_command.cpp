@@ -85,6 +85,7 @@ int run_scene(const RunArgs& args) {
   check_trace_files(args.traces);
   inputs.options.max_sim_s = args.max_sim_s;
   inputs.options.max_wall_s = args.max_wall_s;
+  inputs.options.tear_down = false;  // the command exits after this run: no teardown (Machine)
   RunProgress progress(isatty(STDERR_FILENO));
   inputs.options.progress = [&progress](std::int64_t done, std::int64_t total) {
     progress.update(done, total);

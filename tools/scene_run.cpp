@@ -11,7 +11,8 @@ namespace t800sim {
 namespace {
 
 SceneRun run_checked(const std::string& scene_file, const std::vector<std::string>& overrides) {
-  const workloads::RunInputs inputs = tools::inputs_from(tools::load_scene(scene_file, overrides));
+  workloads::RunInputs inputs = tools::inputs_from(tools::load_scene(scene_file, overrides));
+  inputs.options.tear_down = false;  // one simulation per process: no teardown (network::Machine)
   const workloads::RunReport report = workloads::run(inputs);
   tools::write_tables(report, inputs.params);
   SceneRun r;

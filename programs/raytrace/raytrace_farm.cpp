@@ -97,12 +97,6 @@ class RaytraceFarm : public Program {
        store(farm_.round(p, INT(0)));
        farm_.finish(p);
      }).placed_on(master_);
-    // Every worker runs one PROC, whichever line it traces; a recorded line's code holds only the
-    // paths its rays took, and a machine counts the first code of a name. The middle line's (its
-    // rays reach the spheres and the ground) is declared first and stands for the PROC.
-    const Kernel& middle = farm_.tasks()[std::size_t(image_.height / 2)].kernel;
-    for (std::size_t w = 0; w < workers_.size(); ++w)
-      b.code("worker[" + std::to_string(w) + "]", middle);
     farm_.build(b, "master", workers_);
   }
 

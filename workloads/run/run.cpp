@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <utility>
+#include <vector>
 
 #include "network/families.hpp"
 
@@ -183,9 +185,22 @@ std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInp
   return workload;
 }
 
+namespace {
+
+// A machine whose processes were left standing (MachineOptions::tear_down false) must never be
+// destroyed -- its threads still refer to it -- so it is kept, reachable (a leak checker does not
+// report it), until the program exits.
+void leave_standing(std::unique_ptr<network::Machine> machine) {
+  static auto* standing = new std::vector<std::unique_ptr<network::Machine>>();
+  standing->push_back(std::move(machine));
+}
+
+}  // namespace
+
 RunReport run(const RunInputs& in) {
   const auto start = std::chrono::steady_clock::now();
-  network::Machine machine(in.topology, in.options);
+  auto owned = std::make_unique<network::Machine>(in.topology, in.options);
+  network::Machine& machine = *owned;
   for (const network::FaultSpec& f : in.faults) machine.faults().add(f);
   network::arm_faults(machine);
   std::unique_ptr<Workload> workload = build_workload(machine, in);
@@ -213,6 +228,7 @@ RunReport run(const RunInputs& in) {
     }
   }
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!machine.tears_down()) leave_standing(std::move(owned));
   return report;
 }
 
