@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <tuple>
+#include <type_traits>
 
 #include "sdk/realise.hpp"
 #include "t800/link_timing.hpp"
