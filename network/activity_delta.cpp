@@ -1,5 +1,7 @@
 #include "network/activity_delta.hpp"
 
+#include "network/process.hpp"
+
 namespace network {
 
 namespace {
@@ -97,6 +99,12 @@ void credit(Machine& m, const ActivityDelta& d, const sc_core::sc_time& start) {
       info.link->activity(dir).credit(l.bytes, l.messages, l.busy_us,
                                       shifted(l.intervals, 0, start_us));
     }
+}
+
+void replay(Process& p, const ActivityDelta& d) {
+  const sc_core::sc_time start = sc_core::sc_time_stamp();
+  sc_core::wait(d.duration);
+  credit(p.machine(), d, start);
 }
 
 std::string unquiet(Machine& m) {

@@ -52,6 +52,12 @@ ActivitySnapshot snapshot(Machine& m);
 ActivityDelta delta_since(Machine& m, const ActivitySnapshot& before);
 // Adds a recorded delta to the accounting as if it had just run from `start`.
 void credit(Machine& m, const ActivityDelta& d, const sc_core::sc_time& start);
+// Replays a recorded stretch in `p`, the process that drove it: p lets the stretch's duration
+// pass, without simulating it (every other process stays as it is, blocked), and the delta is
+// credited from when it began. The simulator's service to step reuse (workloads/trajectory/
+// step_reuse.hpp), not part of the SDK: a program may not skip simulated time, only the simulator
+// may, for a stretch it has proven it would simulate identically.
+void replay(Process& p, const ActivityDelta& d);
 // Every CPU's clock-dependent slices and timeslice ends, summed: unchanged over a stretch, the
 // stretch did not depend on where the timeslice clock's ticks fell
 // (t800::CpuStatistics::clock_dependent).

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <typeindex>
 
+#include <systemc>
+
 #include "network/channel.hpp"
 #include "network/machine.hpp"
 #include "network/process.hpp"
@@ -26,6 +28,16 @@ std::string Process::processor() const {
 
 double Process::now_us() const {
   return impl_.now_us();
+}
+
+Process::Instant Process::instant() const {
+  return {sc_core::sc_time_stamp().value()};
+}
+
+double Process::us_between(Instant from, Instant to) {
+  return (sc_core::sc_time::from_value(to.ticks) - sc_core::sc_time::from_value(from.ticks))
+             .to_seconds() *
+         1e6;
 }
 
 void Process::compute(std::int64_t cycles, const std::string& label) {

@@ -47,13 +47,11 @@ class Realisation {
       if (!p.decl->body) continue;
       const std::vector<bool>& runs = p.decl->runs;
       if (std::size_t(p.index) < runs.size() && !runs[std::size_t(p.index)]) continue;
-      const auto priority = p.decl->high_priority ? t800::Priority::high : t800::Priority::low;
       const Process::IndexedBody& body = p.decl->body;
       const int index = p.index;
-      machine.spawn(p.node, p.name, priority, [&body, index](network::Process& impl) {
-        Process process(impl);
-        body(process, index);
-      });
+      detail::spawn(
+          machine, p.node, p.name, [&body, index](Process& process) { body(process, index); },
+          p.decl->high_priority);
     }
   }
 
@@ -94,6 +92,15 @@ class Realisation {
 };
 
 }  // namespace
+
+void spawn(network::Machine& machine, int node, const std::string& name, const Process::Body& body,
+           bool high_priority) {
+  machine.spawn(node, name, high_priority ? t800::Priority::high : t800::Priority::low,
+                [body](network::Process& impl) {
+                  Process process(impl);
+                  body(process);
+                });
+}
 
 // Nothing runs before every declaration is known good: the processes are placed, the channels
 // joined and routed, then the processes spawned.

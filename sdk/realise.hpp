@@ -21,4 +21,10 @@ std::vector<PlacedProcess> realise(const std::string& kind, Builder& builder,
                                    network::Machine& machine,
                                    const std::vector<workloads::PlacementEntry>& scene);
 
+// Spawns a process with an SDK body on `node` (a processor index, or network::Machine::kHost):
+// how a built-in workload starts the processes it declares without a body -- the host's, and a
+// master it drives itself -- and how realise() starts the others.
+void spawn(network::Machine& machine, int node, const std::string& name, const Process::Body& body,
+           bool high_priority = false);
+
 }  // namespace t800sim::detail

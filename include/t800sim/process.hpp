@@ -46,6 +46,16 @@ class Process {
   std::string processor() const;  // the processor's name ("host" for the host PC)
   double now_us() const;          // simulated time
 
+  // An instant of simulated time, exact (in the simulator's time resolution): an interval
+  // measured between two instants is the same wherever it lies in time, where a difference of
+  // now_us() readings is rounded at the two absolute times (a program timing its steps, whose
+  // reports must not drift as the run goes on).
+  struct Instant {
+    std::uint64_t ticks = 0;
+  };
+  Instant instant() const;
+  static double us_between(Instant from, Instant to);
+
   // Computation on this process's CPU: a cycle count, an operation mix, or a recorded kernel
   // (t800sim/kernel.hpp), timed from its T800 code.
   void compute(std::int64_t cycles, const std::string& label = {});

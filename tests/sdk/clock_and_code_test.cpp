@@ -1,6 +1,7 @@
-// Two ways a process's time is read or charged through the SDK: clock() reads the TIMER without
-// the instructions timer() charges, and cycles(Instructions) prices a sequence of instructions
-// written out, by the T800's instruction timings (the T800 datasheet: ldc and add 1 cycle each).
+// Ways a process's time is read or charged through the SDK: clock() reads the TIMER without the
+// instructions timer() charges, instant() and us_between() measure an interval exactly, and
+// cycles(Instructions) prices a sequence of instructions written out, by the T800's instruction
+// timings (the T800 datasheet: ldc and add 1 cycle each).
 #include <gtest/gtest.h>
 
 #include "sdk_fixtures.hpp"
@@ -34,6 +35,29 @@ TEST(SdkClock, ClockReadsTheTimerWithoutChargingIt) {
   EXPECT_EQ(after_clock_us, before_us);
   EXPECT_EQ(by_timer, after_wait);
   EXPECT_GT(after_timer_us, before_us);
+}
+
+// An interval between two instants is exact: the same 3000 cycles (150 us on a T800-20, 50 ns a
+// cycle) measure the same, bit for bit, early in the run and after 50 simulated seconds, where a
+// difference of now_us() readings is rounded at the absolute times.
+TEST(SdkClock, IntervalsBetweenInstantsDoNotDependOnWhenTheyLie) {
+  double early_us = -1, late_us = -1;
+  auto* program = new Lambda([&](Builder& b) {
+    b.process("p", [&](Process& p) {
+       auto measure = [&p] {
+         const Process::Instant from = p.instant();
+         p.compute(3000);
+         return Process::us_between(from, p.instant());
+       };
+       p.compute(7);
+       early_us = measure();
+       p.compute(1'000'000'001);
+       late_us = measure();
+     }).high();
+  });
+  ASSERT_TRUE(sdk_test::run(program, sdk_test::chain(1)).blocked.empty());
+  EXPECT_NEAR(early_us, 3000 * 0.05, 1e-9);
+  EXPECT_EQ(late_us, early_us);
 }
 
 TEST(SdkCode, InstructionsArePricedByTheirTimings) {

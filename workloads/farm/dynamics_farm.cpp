@@ -66,16 +66,11 @@ class DynamicsFarm : public Workload {
     // message sizes and costs do not depend on them (FarmSettings::skip_numerics).
     program_.set_skip_numerics(m.options().fidelity.skip_numerics);
     program_.build(m);
-    auto& state = m.channel("state", network::Machine::kHost, master_of(m.topology()));
-    m.spawn(network::Machine::kHost, "host", t800::Priority::low, [&state](network::Process& p) {
-      p.out(state, {2 * dynamics::kJoints * std::int64_t(sizeof(S)), {}, "state"});
-    });
-    m.spawn(master_of(m.topology()), "master", t800::Priority::low,
-            [this, &state](network::Process& p) {
-              p.in(state);
-              round_ = program_.evaluate(p, q_, qd_, data_);
-              program_.finish(p);
-            });
+    host_ =
+        spawn_host_and_master<S>(m, master_of(m.topology()), "state", [this](t800sim::Process& p) {
+          round_ = program_.evaluate(p, q_, qd_, data_);
+          program_.finish(p);
+        });
   }
 
   ResultValue results(const network::Machine& m) const override {
@@ -130,8 +125,8 @@ class DynamicsFarm : public Workload {
       row.set("compute_us", a.compute_us());
       row.set("busy_in_tp_us", busy);
       row.set("utilisation_pct", 100.0 * busy / tp_us);
-      // When it last stopped working, from the start of Tp; a worker that did nothing in Tp (no subtask,
-      // nothing to route) was done when Tp began.
+      // When it last stopped working, from the start of Tp; a worker that did nothing in Tp (no
+      // subtask, nothing to route) was done when Tp began.
       row.set("end_us", std::max(0.0, a.last_busy_us() - origin));
       ResultValue names = ResultValue::list();
       for (int t : program_.done_by()[w]) names.push(program_.work().tasks[t].subtask.name);
@@ -164,6 +159,7 @@ class DynamicsFarm : public Workload {
   JointVector q_, qd_;
   FarmRound round_;
   dynamics::DynamicsData<S> data_;
+  std::unique_ptr<t800sim::Builder> host_;  // the state's channel, host -> master
 };
 
 }  // namespace

@@ -122,37 +122,59 @@ S FarmProgram<S>::run_subtask(int task, const std::vector<S>& shared) const {
 }
 
 template <class S>
-FarmRound FarmProgram<S>::evaluate(network::Process& p, const dynamics::JointVector& q,
+FarmRound FarmProgram<S>::evaluate(t800sim::Process& p, const dynamics::JointVector& q,
                                    const dynamics::JointVector& qd,
                                    dynamics::DynamicsData<S>& data) {
   FarmRound round;
   round.start_us = p.now_us();
-  p.compute(work_.master_input, "sin/cos");
+  p.compute(t800sim::Kernel(work_.master_input), "sin/cos");
   // The message's size is the model's (worker_input_reals), whatever it holds; skipping, it holds
   // nothing the workers read.
   dynamics::WorkerInput<S> input;
   if (!settings_.skip_numerics) input = dynamics::make_worker_input<S>(model_, q);
   std::vector<S> shared;
   for (S* field : dynamics::message_fields(model_, input)) shared.push_back(*field);
-  t800sim::Process master(p);
-  data.values = farm_->round(master, shared);
+  data.values = farm_->round(p, shared);
   const t800sim::FarmRoundTiming& timing = farm_->last_round();
   round.farm_start_us = timing.start_us;
   round.farm_end_us = timing.end_us;
   round.busy_in_farm_us = timing.busy_us;
-  p.compute(work_.master_assembly, "assemble");
+  p.compute(t800sim::Kernel(work_.master_assembly), "assemble");
   if (!settings_.skip_numerics) dynamics::assemble(subtasks(), qd, data);
   round.end_us = p.now_us();
   return round;
 }
 
 template <class S>
-void FarmProgram<S>::finish(network::Process& p) {
-  t800sim::Process master(p);
-  farm_->finish(master);
+void FarmProgram<S>::finish(t800sim::Process& p) {
+  farm_->finish(p);
+}
+
+template <class S>
+std::unique_ptr<t800sim::Builder> spawn_host_and_master(network::Machine& m, int master,
+                                                        const std::string& label,
+                                                        const t800sim::Process::Body& body) {
+  using State = t800sim::Array<S, 2 * dynamics::kJoints>;
+  auto b = std::make_unique<t800sim::Builder>(m.topology());
+  b->process("host", nullptr).placed_on_host();
+  b->process("master", nullptr).placed_on(m.node_name(master));
+  const t800sim::Chan<State> state = b->channel<State>("state", "host", "master");
+  t800sim::detail::realise("farm host", *b, m, {});
+  t800sim::detail::spawn(m, network::Machine::kHost, "host", [state, label](t800sim::Process& p) {
+    p.out(state.out(), t800sim::value_of<State>{}, label);
+  });
+  t800sim::detail::spawn(m, master, "master", [state, body](t800sim::Process& p) {
+    p.in(state.in());
+    body(p);
+  });
+  return b;
 }
 
 template class FarmProgram<float>;
 template class FarmProgram<double>;
+template std::unique_ptr<t800sim::Builder> spawn_host_and_master<float>(
+    network::Machine&, int, const std::string&, const t800sim::Process::Body&);
+template std::unique_ptr<t800sim::Builder> spawn_host_and_master<double>(
+    network::Machine&, int, const std::string&, const t800sim::Process::Body&);
 
 }  // namespace workloads

@@ -58,10 +58,10 @@ class FarmProgram {
   // workers, declares the master's code as that of its process `master_process`.
   void build(network::Machine& m, const std::string& master_process = "master");
   // Called from the master's process: one evaluation at (q, qd) into `data`.
-  FarmRound evaluate(network::Process& master, const dynamics::JointVector& q,
+  FarmRound evaluate(t800sim::Process& master, const dynamics::JointVector& q,
                      const dynamics::JointVector& qd, dynamics::DynamicsData<S>& data);
   // Called from the master's process after the last evaluation: every worker ends.
-  void finish(network::Process& master);
+  void finish(t800sim::Process& master);
 
   // Before build(): see FarmSettings::skip_numerics.
   void set_skip_numerics(bool skip) { settings_.skip_numerics = skip; }
@@ -88,6 +88,15 @@ class FarmProgram {
   std::unique_ptr<t800sim::Builder> builder_;  // owns the channels the skeleton's handles name
   std::unique_ptr<Skeleton> farm_;
 };
+
+// The host's part of a farm workload, after the farm (and whatever else) is built: the host sends
+// the state (q, q̇: 2 × 6 REALs of S) on channel "state" to the process "master" on processor
+// `master`, which takes it and runs `body`. `label` names the message in traces. The returned
+// Builder owns the channel: keep it for the run.
+template <class S>
+std::unique_ptr<t800sim::Builder> spawn_host_and_master(network::Machine& m, int master,
+                                                        const std::string& label,
+                                                        const t800sim::Process::Body& body);
 
 extern template class FarmProgram<float>;
 extern template class FarmProgram<double>;

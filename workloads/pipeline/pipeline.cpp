@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "sdk/realise.hpp"
 #include "workloads/setting_error.hpp"
 
 namespace workloads {
@@ -31,8 +32,8 @@ class EngineT : public EliminationPipeline::Engine {
   // The host sends the system and is done: Tp ends on L4, and nothing moves after it.
   void build(network::Machine& machine) override {
     program_.build(machine, network::Machine::kHost, Serve::once);
-    machine.spawn(network::Machine::kHost, "host", t800::Priority::low,
-                  [this](network::Process& p) { program_.send(p, system_); });
+    t800sim::detail::spawn(machine, network::Machine::kHost, "host",
+                           [this](t800sim::Process& p) { program_.send(p, system_); });
   }
 
   ResultValue sequential_check() const override {

@@ -21,7 +21,7 @@ namespace workloads {
 namespace {
 
 using elimination::Rows;
-using network::Process;
+using t800sim::Process;
 
 int require_node(const network::Topology& t, const std::string& name, const std::string& role) {
   const int index = t.find(name);
@@ -261,14 +261,14 @@ class PipelineProgram<T>::Levels {
       throw std::logic_error("elimination pipeline: send after a failed round or finish");
     report_.begin_round();
     report_.outcome.input_start_us = p.now_us();
-    t800sim::Process(p).out(pipe_.in(0), M::system(system), "system");
+    p.out(pipe_.in(0), M::system(system), "system");
     if (serve_ == Serve::once) stopped_ = true;  // the levels take one system and end
   }
 
   void receive(Process& p) {
     if (serve_ != Serve::until_finish)
       throw std::logic_error("elimination pipeline: solve() needs Serve::until_finish");
-    const auto answer = t800sim::Process(p).in(pipe_.out(0));
+    const auto answer = p.in(pipe_.out(0));
     report_.outcome.returned_us = p.now_us();
     if (std::get<0>(answer) & levels::header::kStop) stopped_ = true;
   }
@@ -276,7 +276,7 @@ class PipelineProgram<T>::Levels {
   void finish(Process& p) {
     if (stopped_) return;
     stopped_ = true;
-    t800sim::Process(p).out(pipe_.in(0), M::finish(), "finish");
+    p.out(pipe_.in(0), M::finish(), "finish");
   }
 
   const PipelineOutcome& outcome() const { return report_.outcome; }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "network/machine.hpp"
+#include "t800sim/process.hpp"
 #include "workloads/elimination/gauss.hpp"
 #include "workloads/elimination/system.hpp"
 #include "workloads/pipeline/schedule.hpp"
@@ -93,12 +94,12 @@ class PipelineProgram {
   // (network::Machine::kHost: the host), spawned by the caller.
   void build(network::Machine& machine, int client, Serve serve);
   // From the client's process: sends the system to L1 (its REAL values) and starts a round.
-  void send(network::Process& client, const elimination::LinearSystem<S>& system);
+  void send(t800sim::Process& client, const elimination::LinearSystem<S>& system);
   // send(), then waits for q̈ from L4 (Serve::until_finish).
-  const PipelineOutcome& solve(network::Process& client,
+  const PipelineOutcome& solve(t800sim::Process& client,
                                const elimination::LinearSystem<S>& system);
   // From the client's process after the last solve: every level ends.
-  void finish(network::Process& client);
+  void finish(t800sim::Process& client);
 
   const PipelineOutcome& outcome() const;
   const PipelineSettings& settings() const;

@@ -1,10 +1,12 @@
 #include "workloads/trajectory/step_reuse.hpp"
 
 #include "network/process.hpp"
+#include "t800sim/process.hpp"
 
 namespace workloads {
 
-StepReuse::StepReuse(const network::MachineOptions& options) {
+StepReuse::StepReuse(network::Machine& machine) : machine_(machine) {
+  const network::MachineOptions& options = machine.options();
   if (!options.fidelity.reuse_steps)
     off_ = "fidelity.reuse_steps = false";
   else if (options.fidelity.compute == t800::ComputeFidelity::fine)
@@ -13,38 +15,40 @@ StepReuse::StepReuse(const network::MachineOptions& options) {
         "translation-invariant";
 }
 
-bool StepReuse::replay(network::Process& master, const Signature& signature,
+void StepReuse::boundary(t800sim::Process& master) {
+  master.impl().deschedule();
+  master.impl().reschedule();
+}
+
+bool StepReuse::replay(t800sim::Process& master, const Signature& signature,
                        const std::string& refused, StepTimes& times) {
   if (!enabled()) return false;
-  network::Machine& m = master.machine();
   why_ = refused;
   if (why_.empty()) {
-    why_ = network::unquiet(m);
+    why_ = network::unquiet(machine_);
     if (!why_.empty()) why_ += " at the step's start";
   }
   if (!why_.empty()) return false;
   const auto known = recorded_.find(signature);
   if (known == recorded_.end()) return false;
   // Every other process stays blocked, waiting for input, as it would be between steps.
-  const sc_core::sc_time start = sc_core::sc_time_stamp();
-  sc_core::wait(known->second.activity.duration);
-  network::credit(m, known->second.activity, start);
+  network::replay(master.impl(), known->second.activity);
   times = known->second.times;
   ++reused_;
   return true;
 }
 
-void StepReuse::simulating(network::Machine& m) {
+void StepReuse::simulating() {
   ++simulated_;
-  if (enabled()) before_ = network::snapshot(m);
+  if (enabled()) before_ = network::snapshot(machine_);
 }
 
-void StepReuse::simulated(network::Machine& m, const Signature& signature,
-                          const std::string& disagreement, const StepTimes& times) {
+void StepReuse::simulated(const Signature& signature, const std::string& disagreement,
+                          const StepTimes& times) {
   if (!enabled()) return;
-  if (why_.empty()) why_ = invariance(m, disagreement);
+  if (why_.empty()) why_ = invariance(disagreement);
   if (why_.empty()) {
-    recorded_.emplace(signature, Recorded{network::delta_since(m, before_), times});
+    recorded_.emplace(signature, Recorded{network::delta_since(machine_, before_), times});
     why_ = "the first step of its signature (recorded)";
   }
   ++simulated_because_[why_];
@@ -55,11 +59,11 @@ void StepReuse::failed(const std::string& what) {
 }
 
 // Why the step just simulated may not stand for later steps of its signature; empty when it may.
-std::string StepReuse::invariance(network::Machine& m, const std::string& disagreement) const {
-  if (network::clock_events(m) != before_.clock)
+std::string StepReuse::invariance(const std::string& disagreement) const {
+  if (network::clock_events(machine_) != before_.clock)
     return "a CPU's timeslice clock was involved (t800::CpuStatistics clock_dependent or "
            "timeslices changed): the step is not translation-invariant";
-  const std::string busy = network::unquiet(m);
+  const std::string busy = network::unquiet(machine_);
   if (!busy.empty()) return busy + " at the step's end";
   return disagreement;
 }

@@ -5,7 +5,10 @@
 // its end, and the simulated numbers agreed with the sequential numerics that gave its signature.
 //
 // The workload owns the signature (what fixes its step's costs) and the agreement check; this class
-// owns the recordings, the replay and the report of why each step was simulated.
+// owns the recordings, the replay and the report of why each step was simulated. The workload's
+// master is an SDK process (t800sim/process.hpp); replaying is what only the simulator may do --
+// let a recorded step's time pass without simulating it -- and this class alone reaches it, through
+// network::replay (network/activity_delta.hpp).
 #pragma once
 
 #include <cstdint>
@@ -17,7 +20,7 @@
 #include "workloads/run/result_value.hpp"
 #include "workloads/trajectory/step_times.hpp"
 
-namespace network {
+namespace t800sim {
 class Process;
 }
 
@@ -29,19 +32,23 @@ class StepReuse {
 
   // Reuse is off for the whole run when fidelity.reuse_steps is false, or when compute fidelity
   // 'fine' ties every step to the absolute timeslice ticks.
-  explicit StepReuse(const network::MachineOptions& options);
+  explicit StepReuse(network::Machine& machine);
   bool enabled() const { return off_.empty(); }
 
+  // A step boundary, reused or not: the master takes the CPU afresh (a zero-time deschedule and
+  // reschedule, so its timeslice starts here whatever came before), and a reused step leaves the
+  // scheduler as a simulated one does.
+  static void boundary(t800sim::Process& master);
   // A step about to run. `refused` is the workload's reason to simulate it whatever was recorded
   // (empty: none). True when a recorded step was replayed into `times`: the master let its
   // duration pass and its work was credited to every processor and link.
-  bool replay(network::Process& master, const Signature& signature, const std::string& refused,
+  bool replay(t800sim::Process& master, const Signature& signature, const std::string& refused,
               StepTimes& times);
   // The step is simulated now (after replay() returned false, or with reuse off).
-  void simulating(network::Machine& m);
+  void simulating();
   // The simulated step ended; `disagreement` is the workload's reason the simulated numbers may not
   // stand for the signature (empty: they agree).
-  void simulated(network::Machine& m, const Signature& signature, const std::string& disagreement,
+  void simulated(const Signature& signature, const std::string& disagreement,
                  const StepTimes& times);
   // The simulated step ended in a failure (`what` failed).
   void failed(const std::string& what);
@@ -53,8 +60,9 @@ class StepReuse {
     network::ActivityDelta activity;
     StepTimes times;
   };
-  std::string invariance(network::Machine& m, const std::string& disagreement) const;
+  std::string invariance(const std::string& disagreement) const;
 
+  network::Machine& machine_;
   std::string off_;  // why reuse is off for the whole run (empty: on)
   std::map<Signature, Recorded> recorded_;
   std::string why_;  // why the step being simulated is simulated (empty: not known yet)

@@ -8,12 +8,10 @@
 #include <optional>
 #include <stdexcept>
 
+#include "t800sim/kernel.hpp"
+#include "t800sim/process.hpp"
 #include "workloads/setting_error.hpp"
 
-#include <systemc>
-
-#include "network/activity_delta.hpp"
-#include "t800/activity.hpp"
 #include "workloads/dynamics/counted.hpp"
 #include "workloads/elimination/system.hpp"
 #include "workloads/farm/farm_program.hpp"
@@ -29,7 +27,7 @@ namespace workloads {
 namespace {
 
 using dynamics::JointVector;
-using network::Process;
+using t800sim::Process;
 
 struct TrajectorySettings {
   integration::Method method = integration::Method::rk4;
@@ -127,10 +125,10 @@ PipelineNodes pipeline_nodes(const network::Topology& t, int m) {
   return find_pipeline_nodes(t, m);
 }
 
-// Simulated microseconds between two instants, from their exact difference (so that a step of the
-// same length gives the same number wherever it lies in time).
-double us_between(const sc_core::sc_time& from, const sc_core::sc_time& to) {
-  return (to - from).to_seconds() * 1e6;
+// Simulated microseconds from an instant to now, from their exact difference (so that a step of
+// the same length gives the same number wherever it lies in time).
+double us_since(const Process& p, Process::Instant from) {
+  return Process::us_between(from, p.instant());
 }
 
 struct StepRecord {
@@ -169,22 +167,15 @@ class Trajectory : public Workload {
   void build(network::Machine& m) override {
     farm_.build(m);  // never skips numerics: a trajectory integrates its numbers
     pipeline_.build(m, master_, Serve::until_finish);
-    integrator_ = {to_operation_mix(integrator_ops()), record_integrator()};
-    rhs_ = right_hand_side_work();
-    m.declare_code(master_, "master", integrator_.code);
-    m.declare_code(master_, "master", rhs_.code);
+    integrator_.emplace(t800::ComputeWork{to_operation_mix(integrator_ops()), record_integrator()});
+    rhs_.emplace(right_hand_side_work());
+    m.declare_code(master_, "master", integrator_->work().code);
+    m.declare_code(master_, "master", rhs_->work().code);
     progress_ = m.options().progress;
     subtasks_ = farm_.subtasks();
     skip_numerics_asked_ = m.options().fidelity.skip_numerics;
-    reuse_.emplace(m.options());
-    auto& state = m.channel("state", network::Machine::kHost, master_);
-    m.spawn(network::Machine::kHost, "host", t800::Priority::low, [&state](Process& p) {
-      p.out(state, {2 * dynamics::kJoints * std::int64_t(sizeof(S)), {}, "initial state"});
-    });
-    m.spawn(master_, "master", t800::Priority::low, [this, &state](Process& p) {
-      p.in(state);
-      run(p);
-    });
+    reuse_.emplace(m);
+    host_ = spawn_host_and_master<S>(m, master_, "initial state", [this](Process& p) { run(p); });
   }
 
   ResultValue results(const network::Machine&) const override;
@@ -260,7 +251,7 @@ class Trajectory : public Workload {
     }
     const double t = double(records_.size()) * s_.dt;
     records_.push_back({t, wide(x.q), wide(x.qd), torque(t, wide(x.q), wide(x.qd)), {}});
-    fresh_slice(p);  // the end is a step boundary too
+    StepReuse::boundary(p);  // the end is a step boundary too
     farm_.finish(p);
     pipeline_.finish(p);
   }
@@ -284,7 +275,7 @@ class Trajectory : public Workload {
   // before), so a reused step leaves the scheduler as a simulated one does.
   integration::State<S> advance(Process& p, double t, const integration::State<S>& x,
                                 StepTimes& times) {
-    fresh_slice(p);
+    StepReuse::boundary(p);
     std::optional<Sequential> seq;
     if (reuse_->enabled()) {
       // The step's numbers by the sequential numerics, and with them its signature: every
@@ -294,7 +285,7 @@ class Trajectory : public Workload {
                          times))
         return seq->next;
     }
-    reuse_->simulating(p.machine());
+    reuse_->simulating();
     simulated_signature_.clear();
     integration::State<S> next;
     try {
@@ -303,13 +294,8 @@ class Trajectory : public Workload {
       reuse_->failed("the pipeline's solve failed");
       throw;
     }
-    if (seq) reuse_->simulated(p.machine(), seq->signature, disagreement(*seq, next), times);
+    if (seq) reuse_->simulated(seq->signature, disagreement(*seq, next), times);
     return next;
-  }
-
-  static void fresh_slice(Process& p) {
-    p.deschedule();
-    p.reschedule();
   }
 
   // Why the simulated step's numbers may not stand for its signature: empty when they are the
@@ -355,17 +341,17 @@ class Trajectory : public Workload {
 
   integration::State<S> step(Process& p, double t, const integration::State<S>& x,
                              StepTimes& times) {
-    const sc_core::sc_time start = sc_core::sc_time_stamp();
+    const Process::Instant start = p.instant();
     const double* offsets = integration::stage_offsets(s_.method);
     int stage = 0;
     auto f = [&](const Vec& q, const Vec& qd) {
       return acceleration(p, t + offsets[stage++] * s_.dt, q, qd, times);
     };
     const integration::State<S> next = integration::step(s_.method, x, S(s_.dt), f);
-    const sc_core::sc_time before = sc_core::sc_time_stamp();
-    p.compute(integrator_, "integrate");
-    times.integration_us += us_between(before, sc_core::sc_time_stamp());
-    times.step_us = us_between(start, sc_core::sc_time_stamp());
+    const Process::Instant before = p.instant();
+    p.compute(*integrator_, "integrate");
+    times.integration_us += us_since(p, before);
+    times.step_us = us_since(p, start);
     times.communication_us =
         times.step_us - times.dynamics_us - times.solve_us - times.integration_us;
     return next;
@@ -373,17 +359,17 @@ class Trajectory : public Workload {
 
   // One evaluation: τ, the farm's D, c, h, the right-hand side, the pipeline's q̈.
   Vec acceleration(Process& p, double t, const Vec& q, const Vec& qd, StepTimes& times) {
-    const sc_core::sc_time round_start = sc_core::sc_time_stamp();
+    const Process::Instant round_start = p.instant();
     farm_.evaluate(p, wide(q), wide(qd), data_);
-    times.dynamics_us += us_between(round_start, sc_core::sc_time_stamp());
+    times.dynamics_us += us_since(p, round_start);
     Vec rhs;
     const dynamics::JointVectorT<C> tau = counted_torque(t, wide(q), wide(qd));
     const dynamics::JointVectorT<C> r =
         tau - data_.c.template cast<C>() - data_.h.template cast<C>();
     for (int i = 0; i < dynamics::kJoints; ++i) rhs(i) = r(i).value();
-    const sc_core::sc_time before = sc_core::sc_time_stamp();
-    p.compute(rhs_, "right-hand side");
-    times.integration_us += us_between(before, sc_core::sc_time_stamp());
+    const Process::Instant before = p.instant();
+    p.compute(*rhs_, "right-hand side");
+    times.integration_us += us_since(p, before);
     return solve(p, rhs, times);
   }
 
@@ -438,13 +424,14 @@ class Trajectory : public Workload {
   int master_;
   FarmProgram<S> farm_;
   PipelineProgram<S> pipeline_;
-  t800::ComputeWork integrator_, rhs_;
-  std::vector<dynamics::Subtask> subtasks_;  // the farm's, in its order
+  std::optional<t800sim::Kernel> integrator_, rhs_;  // recorded at build()
+  std::vector<dynamics::Subtask> subtasks_;          // the farm's, in its order
   dynamics::DynamicsData<S> data_;
   bool skip_numerics_asked_ = false;
-  std::optional<StepReuse> reuse_;        // from the machine's options, at build()
-  std::vector<int> simulated_signature_;  // the pipeline's pivots in the step being simulated
-  std::vector<StepRecord> records_;       // one per step, and the final state
+  std::optional<StepReuse> reuse_;          // from the machine's options, at build()
+  std::unique_ptr<t800sim::Builder> host_;  // the initial state's channel, host -> master
+  std::vector<int> simulated_signature_;    // the pipeline's pivots in the step being simulated
+  std::vector<StepRecord> records_;         // one per step, and the final state
   std::vector<LimitViolation> violations_;
   std::array<bool, dynamics::kJoints> outside_{};
   int steps_outside_ = 0;
