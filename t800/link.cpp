@@ -447,17 +447,17 @@ void Link::count_receiver(int di) {
 // when the last byte has arrived and its input is armed.
 
 // At `packet` a closed form is a run: the packets of a message nothing can interleave with,
-// planned from one event. Its input must be armed (no flow-control wait whose end is unknown), no
-// fault or deadline may be in play (they act on packets), and the other direction must be silent,
-// as at `automatic`; when that direction starts, hand_over puts the packet level's state in place
-// at that instant. Its last byte goes packet by packet (on_closed_form), so the message's end --
-// the sender released, the message delivered -- comes from the same events as without the run:
-// two processes released at one instant are then queued in the same order.
+// planned from one event (and again when its input is armed: arm_input). No fault or deadline may
+// be in play (they act on packets), and the other direction must be silent, as at `automatic`;
+// when that direction starts, or a resetch comes, hand_over puts the packet level's state in place
+// at that instant. A message of fewer than 3 bytes saves nothing. Its last byte goes packet by
+// packet (on_closed_form), so the message's end -- the sender released, the message delivered --
+// comes from the same events as without the run: two processes released at one instant are then
+// queued in the same order.
 bool Link::closed_form_allowed(int di) const {
   switch (fidelity_) {
     case LinkFidelity::packet:
-      if (!packet_runs_ || faulted_ || deadline_waits_ > 0 || !dir_[di].armed ||
-          dir_[di].queue.front().bytes < 3)
+      if (!packet_runs_ || faulted_ || deadline_waits_ > 0 || dir_[di].queue.front().bytes < 3)
         return false;
       break;
     case LinkFidelity::message:

@@ -11,9 +11,9 @@
 //
 // Fidelity (t800/fidelity.hpp): at `packet` every packet is simulated at its own time; its end is
 // an event only where another party can act on it (link.cpp, send_data_packet), and a message that
-// nothing can interleave with (its input armed, the other direction silent, no fault, no deadline)
-// is one run: every packet's time in closed form from one event, handed over to the per-packet
-// steps at the instant anything changes (the other direction starts, a resetch). At `message` a
+// nothing can interleave with (the other direction silent, no fault, no deadline) is one run: every
+// packet's time in closed form from one event, handed over to the per-packet steps at its last
+// byte or at the instant anything changes (the other direction starts, a resetch). At `message` a
 // message follows the closed form of LinkTiming -- a handful of events per message instead of
 // several per byte -- which is exact while the other direction is silent. At `automatic` a message
 // starts in closed form only when the other direction is silent, and when the other direction
