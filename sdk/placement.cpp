@@ -97,6 +97,13 @@ std::vector<PlacedProcess> place(const std::string& kind, const Builder& builder
                                    "[placement] " + name + ": one process, one processor");
       if (const auto* e = own ? own : group_entry) {
         c = {*pick(e->processors, d, i), "scene " + where_text(e->where), e->where};
+      } else if (d.on_host) {
+        if (d.body)
+          throw std::invalid_argument("workload " + kind + ": " + name +
+                                      " is placed on the host, where only a process its caller "
+                                      "spawns runs (declared without a body)");
+        placed.push_back({name, &d, i, -1, "the program (the host)", std::nullopt});
+        continue;
       } else if (!d.on.empty()) {
         c = {*pick(d.on, d, i), "the program", std::nullopt};
       } else {

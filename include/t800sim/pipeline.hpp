@@ -22,6 +22,9 @@
 // serves its rounds itself, as an occam programmer would write that process. A channel back to an
 // earlier stage (a loop, like the elimination's reduced matrix returning to level 1) is an ordinary
 // channel the program declares between the two processes by their names (Builder::channel).
+// Process stages may serve until a stop (build(..., kUntilStop): each body ends on the message it
+// recognises as one) and the last may keep its results (no collector), as the elimination's levels
+// serve a trajectory's solves, or keep Table 6's q̈ on level 4.
 //
 //   const auto pipe = t800sim::pipeline<REAL64>()
 //       .stage<REAL64>("square", [](Process& p, double x) { p.compute(500); return x * x; })
@@ -84,6 +87,7 @@ struct StageSpec {
   const std::type_info* input = nullptr;  // the protocols in and out, for relayed()'s check
   const std::type_info* output = nullptr;
   std::string fan_out, fan_in;
+  std::vector<int> direct;  // members never behind them (RelayPlan::direct)
   std::function<void(Builder&, const StageSpec&, const StageWiring&)> declare_relays;
 };
 
@@ -141,14 +145,23 @@ std::vector<Out<P>> outputs_of(Builder& b, const StageWiring& w, const std::stri
 }  // namespace detail
 
 // What a process stage's body is given: its member index (0 for a stage of one process), the
-// rounds it serves, and its channels: from[j] from member j of the stage before (the feeder: one),
-// to[j] to member j of the stage after (the collector: one).
+// rounds it serves (kUntilStop: until a message it recognises as a stop), and its channels:
+// from[j] from member j of the stage before (the feeder: one), to[j] to member j of the stage
+// after (the collector: one; none when the pipeline has no collector).
 template <class In_, class Out_>
 struct StageEnds {
   int member = 0;
   int rounds = 0;
   std::vector<In<In_>> from;
   std::vector<Out<Out_>> to;
+  // A member of a relayed group (PipelineDecl::relayed): whether its channel from the stage before
+  // comes through the fan-out, and its channel to the stage after goes through the fan-in (a
+  // member behind the fan-in tells it of a stop, which it waits for; one with a channel of its own
+  // may not need to).
+  bool behind_fan_out = false, behind_fan_in = false;
+
+  // Whether round r is one the stage serves: SEQ r = 0 FOR rounds, or WHILE not stopped.
+  bool more(int r) const { return rounds == kUntilStop || r < rounds; }
 
   // A channel and the members of the neighbouring stage it joins this one to: one each, or the
   // members behind one relay (relayed), which share it -- a message for several of them is sent
@@ -183,7 +196,10 @@ template <class In_, class Out_>
 class Pipeline {
  public:
   const Out<In_>& in(int round) const { return entry_.at(std::size_t(round) % entry_.size()); }
-  const In<Out_>& out(int round) const { return exit_.at(std::size_t(round) % exit_.size()); }
+  const In<Out_>& out(int round) const {
+    if (exit_.empty()) throw std::logic_error("pipeline: built without a collector, no out()");
+    return exit_.at(std::size_t(round) % exit_.size());
+  }
 
   std::vector<Out<In_>> entry_;  // one per member of the first stage
   std::vector<In<Out_>> exit_;   // one per member of the last
@@ -236,6 +252,7 @@ class PipelineDecl {
                              ": the relay plan's input protocol is not the stage's");
     s.fan_out = plan.fan_out;
     s.fan_in = plan.fan_in;
+    s.direct = plan.direct;
     s.declare_relays = [plan](Builder& b, const detail::StageSpec& stage,
                               const detail::StageWiring& w) {
       std::vector<int> out_served, in_served;
@@ -286,11 +303,24 @@ class PipelineDecl {
 
   // Declares every stage's processes and channels: `feeder` sends round r's item into the first
   // stage, `collector` takes its result from the last (both names of processes the program
-  // declares; they may be one). Every stage serves `rounds` items and ends.
+  // declares; they may be one, and may be processes the simulator's caller spawns, declared
+  // without a body). Every stage serves `rounds` items and ends. Pipelines of process stages only
+  // may also serve until a stop (kUntilStop: each body ends on the message it recognises as one)
+  // and may have no collector ("": the last stage keeps its results; StageEnds::to is empty).
   Pipeline<First, Last> build(Builder& b, const std::string& feeder, const std::string& collector,
                               int rounds) const {
     if (stages_.empty()) throw std::invalid_argument("a pipeline needs at least one stage");
-    if (rounds < 0) throw std::invalid_argument("a pipeline serves zero or more rounds");
+    if (rounds < 0 && rounds != kUntilStop)
+      throw std::invalid_argument("a pipeline serves zero or more rounds, or kUntilStop");
+    for (const detail::StageSpec& s : stages_)
+      if (!s.process && rounds == kUntilStop)
+        throw std::invalid_argument("pipeline stage " + s.name +
+                                    ": serves a number of rounds; only process stages serve "
+                                    "until a stop (kUntilStop)");
+    if (collector.empty() && !stages_.back().process)
+      throw std::invalid_argument("pipeline stage " + stages_.back().name +
+                                  ": gives every result to the collector; only a process stage "
+                                  "ends a pipeline without one");
     std::vector<std::vector<bool>> via_out, via_in;
     for (std::size_t s = 0; s < stages_.size(); ++s) {
       via_out.push_back(behind(b, s, -1, stages_[s].fan_out));
@@ -308,7 +338,7 @@ class PipelineDecl {
       w.before_count = s == 0 ? 1 : stages_[s - 1].count;
       const bool last_stage = s + 1 == stages_.size();
       w.after = last_stage ? collector : stages_[s + 1].name;
-      w.after_count = last_stage ? 1 : stages_[s + 1].count;
+      w.after_count = !last_stage ? stages_[s + 1].count : collector.empty() ? 0 : 1;
       w.all_before = stages_[s].process || (s > 0 && stages_[s - 1].process);
       w.all_after = stages_[s].process || (!last_stage && stages_[s + 1].process);
       stages_[s].declare(b, stages_[s], w);
@@ -321,7 +351,9 @@ class PipelineDecl {
     // Members beyond the rounds' number take nothing: no channel to them (a process group's
     // members are all joined: its body deals the rounds).
     const int entries = head.process ? head.count : std::min(head.count, rounds);
-    const int exits = tail.process ? tail.count : std::min(tail.count, rounds);
+    const int exits = collector.empty() ? 0
+                      : tail.process    ? tail.count
+                                        : std::min(tail.count, rounds);
     for (int i = 0; i < entries; ++i)
       ends.entry_.push_back(b.output<First>(detail::link_name(feeder, head.name, 0, i), feeder));
     for (int i = 0; i < exits; ++i)
@@ -350,7 +382,10 @@ class PipelineDecl {
       throw std::logic_error("pipeline stage " + stage.name + ": a relay through " + relay +
                              " needs a stage of one process " + (side < 0 ? "before" : "after") +
                              " it, and on() for both (one processor per member)");
-    return detail::behind(b.network(), neighbour->on.front(), relay, stage.on);
+    std::vector<bool> out = detail::behind(b.network(), neighbour->on.front(), relay, stage.on);
+    for (int e : stage.direct)
+      if (e >= 0 && e < stage.count) out[std::size_t(e)] = false;
+    return out;
   }
 
   static void check_count(const std::string& name, int count) {
@@ -380,6 +415,8 @@ class PipelineDecl {
         e.rounds = w.rounds;
         e.from = detail::inputs_of<Last>(b, w, s.name, s.name, s.group, i, s.count);
         e.to = detail::outputs_of<Next>(b, w, s.name, s.name, s.group, i, s.count);
+        e.behind_fan_out = w.via_fan_out[std::size_t(i)];
+        e.behind_fan_in = w.via_fan_in[std::size_t(i)];
         for (const Kernel& k : s.code) b.code(detail::member(s.name, s.group, i), k);
       }
       ProcessDecl& d = detail::members(b, s.name, s.count, s.group,

@@ -69,6 +69,14 @@ struct ProcessDecl {
     on = std::move(processors);
     return *this;
   }
+  // A process the simulator's caller spawns on the host (declared without a body: a built-in
+  // workload's client, fed from the host as a B004's program is): its channels end at the host's
+  // link. A scene's [placement] entry for it still wins.
+  bool on_host = false;
+  ProcessDecl& placed_on_host() {
+    on_host = true;
+    return *this;
+  }
   ProcessDecl& high() {
     high_priority = true;
     return *this;

@@ -32,10 +32,13 @@
 
 namespace t800sim {
 
+// Rounds served until a stop message ends them (RelayPlan::rounds, PipelineDecl::build).
+inline constexpr int kUntilStop = -1;
+
 // What the relays of one group know of its rounds.
 template <class In_, class Out_>
 struct RelayPlan {
-  static constexpr int kUntilStop = -1;
+  static constexpr int kUntilStop = t800sim::kUntilStop;
   std::string fan_out, fan_in;  // the link processors ("": that side needs none)
   // Round r's messages into the group, in the order the stage before sends them, each with the
   // members it is for.
@@ -52,6 +55,15 @@ struct RelayPlan {
   // place; the fan-in takes them and ends. With this false it does not pass the stop on (the
   // stage after learns of it from a member it reaches directly).
   bool fan_in_passes_stop = true;
+  // Members the relays never serve, on either side: joined to the neighbouring stages by channels
+  // of their own (routed by the network where there is no link) -- a member whose messages the
+  // plan's scatter / gather leave out, such as one that also sends the stage after something
+  // outside the round's plan.
+  std::vector<int> direct;
+  // How traces and fault reports name message `index` of round r's scatter (label_in) or gather
+  // (label_out) as a relay forwards it -- as its sender named it, say. Unset: the channel's name.
+  std::function<std::string(const value_of<In_>&, int round, int index)> label_in;
+  std::function<std::string(const value_of<Out_>&, int round, int index)> label_out;
 };
 
 namespace detail {
@@ -64,6 +76,10 @@ inline bool has(const std::vector<int>& members, int e) {
 }
 inline std::size_t position(const std::vector<int>& served, int e) {
   return std::size_t(std::find(served.begin(), served.end(), e) - served.begin());
+}
+template <class Label, class V>
+std::string relay_label(const Label& label, const V& m, int round, int index) {
+  return label ? label(m, round, index) : std::string();
 }
 
 }  // namespace detail
@@ -82,16 +98,19 @@ void declare_fan_out(Builder& b, const std::string& name, const std::string& pro
   const In<In_> input = b.input<In_>(from, name);
   b.process(name,
             [plan, served, inner, input](Process& p) {
-              for (int r = 0; detail::relay_more(plan.rounds, r); ++r)
-                for (const std::vector<int>& members : plan.scatter(r)) {
+              for (int r = 0; detail::relay_more(plan.rounds, r); ++r) {
+                const std::vector<std::vector<int>> messages = plan.scatter(r);
+                for (std::size_t i = 0; i < messages.size(); ++i) {
                   std::vector<int> here;
-                  for (int e : members)
+                  for (int e : messages[i])
                     if (detail::has(served, e)) here.push_back(e);
                   if (here.empty()) continue;
                   const V m = p.in(input);
-                  for (int e : here) p.out(inner[detail::position(served, e)].out(), m);
+                  const std::string label = detail::relay_label(plan.label_in, m, r, int(i));
+                  for (int e : here) p.out(inner[detail::position(served, e)].out(), m, label);
                   if (plan.stops_in(m)) return;
                 }
+              }
             })
       .placed_on(processor)
       .high();
@@ -101,13 +120,15 @@ void declare_fan_out(Builder& b, const std::string& name, const std::string& pro
     const Out<In_> out = b.output<In_>(to[k], out_name);
     b.process(out_name,
               [plan, e, from_inner = inner[k].in(), out](Process& p) {
-                for (int r = 0; detail::relay_more(plan.rounds, r); ++r)
-                  for (const std::vector<int>& members : plan.scatter(r)) {
-                    if (!detail::has(members, e)) continue;
+                for (int r = 0; detail::relay_more(plan.rounds, r); ++r) {
+                  const std::vector<std::vector<int>> messages = plan.scatter(r);
+                  for (std::size_t i = 0; i < messages.size(); ++i) {
+                    if (!detail::has(messages[i], e)) continue;
                     const V m = p.in(from_inner);
-                    p.out(out, m);
+                    p.out(out, m, detail::relay_label(plan.label_in, m, r, int(i)));
                     if (plan.stops_in(m)) return;
                   }
+                }
               })
         .placed_on(processor)
         .high();
@@ -131,13 +152,15 @@ void declare_fan_in(Builder& b, const std::string& name, const std::string& proc
     const In<Out_> in = b.input<Out_>(from[k], in_name);
     b.process(in_name,
               [plan, e, in, to_inner = inner[k].out()](Process& p) {
-                for (int r = 0; detail::relay_more(plan.rounds, r); ++r)
-                  for (int source : plan.gather(r)) {
-                    if (source != e) continue;
+                for (int r = 0; detail::relay_more(plan.rounds, r); ++r) {
+                  const std::vector<int> order = plan.gather(r);
+                  for (std::size_t i = 0; i < order.size(); ++i) {
+                    if (order[i] != e) continue;
                     const V m = p.in(in);
-                    p.out(to_inner, m);
+                    p.out(to_inner, m, detail::relay_label(plan.label_out, m, r, int(i)));
                     if (plan.stops_out(m)) return;
                   }
+                }
               })
         .placed_on(processor)
         .high();
@@ -147,18 +170,20 @@ void declare_fan_in(Builder& b, const std::string& name, const std::string& proc
             [plan, served, inner, output](Process& p) {
               for (int r = 0; detail::relay_more(plan.rounds, r); ++r) {
                 const std::vector<int> order = plan.gather(r);
-                for (int source : order) {
+                for (std::size_t i = 0; i < order.size(); ++i) {
+                  const int source = order[i];
                   if (!detail::has(served, source)) continue;
                   const V m = p.in(inner[detail::position(served, source)].in());
+                  const std::string label = detail::relay_label(plan.label_out, m, r, int(i));
                   if (!plan.stops_out(m)) {
-                    p.out(output, m);
+                    p.out(output, m, label);
                     continue;
                   }
                   // Every other member with messages in this round sends one stop in their place.
                   for (int e : served)
                     if (e != source && detail::has(order, e))
                       p.in(inner[detail::position(served, e)].in());
-                  if (plan.fan_in_passes_stop) p.out(output, m);
+                  if (plan.fan_in_passes_stop) p.out(output, m, label);
                   return;
                 }
               }

@@ -30,6 +30,12 @@ struct Loop {
   // The last round stops at its second step: spread sends a stop header (index -2) and ends; each
   // member with elements sends a stop in their place and ends; gather sends an empty vector.
   bool stop = false;
+  // Member 0 on E3 (behind both relays) and member 2 on E1, with member 0 listed as direct
+  // (RelayPlan::direct): its channels are its own, routed through X and Y by the network.
+  bool direct_first = false;
+  // The relays name what they forward (RelayPlan::label_in / label_out): the header "header",
+  // element j "element j".
+  bool labelled = false;
 };
 
 network::Topology loop_network(const Loop& s) {
@@ -48,6 +54,15 @@ RelayPlan<Element, Element> loop_plan(const Loop& s) {
   plan.rounds = s.rounds * s.steps;
   plan.stops_in = [](const value_of<Element>& m) { return std::get<0>(m) == -2; };
   plan.stops_out = plan.stops_in;
+  if (s.direct_first) plan.direct = {0};
+  if (s.labelled) {
+    plan.label_in = [](const value_of<Element>&, int, int index) {
+      return index == 0 ? std::string("header") : "element " + std::to_string(index - 1);
+    };
+    plan.label_out = [](const value_of<Element>&, int, int index) {
+      return "element " + std::to_string(index);
+    };
+  }
   plan.scatter = [s](int) {
     std::vector<std::vector<int>> messages(1);
     for (int e = 0; e < s.members; ++e) messages[0].push_back(e);
@@ -69,7 +84,8 @@ RelayPlan<Element, Element> loop_plan(const Loop& s) {
 // j mod members. Returns the collector's vectors and the tags gather saw.
 struct LoopOutcome {
   std::vector<std::vector<INT>> vectors;
-  std::vector<std::vector<INT>> tags;  // per round, per element (the last step's)
+  std::vector<std::vector<INT>> tags;         // per round, per element (the last step's)
+  std::vector<std::pair<bool, bool>> behind;  // per member: behind the fan-out, the fan-in
   std::vector<network::BlockedProcess> blocked;
 };
 
@@ -83,6 +99,7 @@ void build_loop(Builder& b, const Loop& s, std::shared_ptr<LoopOutcome> out) {
   std::vector<std::string> work_on;
   for (int i = 0; i < s.members; ++i)
     work_on.push_back(s.relayed ? "E" + std::to_string(1 + i) : "P" + std::to_string(2 + i));
+  if (s.direct_first) std::swap(work_on[0], work_on[2]);
   auto spread = [s, back](Process& p, const StageEnds<Vector, Element>& e) {
     for (int r = 0; r < e.rounds; ++r) {
       std::vector<INT> v = p.in(e.from[0]);
@@ -97,7 +114,8 @@ void build_loop(Builder& b, const Loop& s, std::shared_ptr<LoopOutcome> out) {
       }
     }
   };
-  auto work = [s](Process& p, const StageEnds<Element, Element>& e) {
+  auto work = [s, out](Process& p, const StageEnds<Element, Element>& e) {
+    if (out) out->behind[std::size_t(e.member)] = {e.behind_fan_out, e.behind_fan_in};
     int mine = 0;  // this member's elements per step: j = member, member + members, ...
     for (int j = e.member; j < s.length; j += s.members) ++mine;
     for (int r = 0; r < e.rounds * s.steps; ++r) {
@@ -159,18 +177,23 @@ void build_loop(Builder& b, const Loop& s, std::shared_ptr<LoopOutcome> out) {
    }).placed_on(on("L4", "P0"));
 }
 
-LoopOutcome run_loop(const Loop& s) {
+LoopOutcome run_loop(const Loop& s, const std::vector<network::FaultSpec>& faults = {},
+                     std::vector<network::FaultRecord>* records = nullptr) {
   auto out = std::make_shared<LoopOutcome>();
   out->vectors.assign(std::size_t(s.rounds), {});
   out->tags.assign(std::size_t(s.rounds), std::vector<INT>(std::size_t(s.length), -1));
+  out->behind.assign(std::size_t(s.members), {true, true});
   auto* program = new Lambda([s, out](Builder& b) { build_loop(b, s, out); });
-  out->blocked = sdk_test::run(program, loop_network(s)).blocked;
+  const sdk_test::Outcome o = sdk_test::run(program, loop_network(s), {}, faults);
+  out->blocked = o.blocked;
+  if (records) *records = o.faults;
   return *out;
 }
 
 void PrintTo(const Loop& s, std::ostream* os) {
   *os << "length" << s.length << "_members" << s.members << "_steps" << s.steps << "_rounds"
-      << s.rounds << (s.relayed ? "_relayed" : "");
+      << s.rounds << (s.relayed ? "_relayed" : "") << (s.direct_first ? "_direct" : "")
+      << (s.labelled ? "_labelled" : "");
 }
 
 class EveryLoop : public ::testing::TestWithParam<Loop> {};
@@ -189,12 +212,20 @@ TEST_P(EveryLoop, EachElementGoesRoundTheLoopStepsTimesOnItsMember) {
       EXPECT_EQ(o.tags[std::size_t(r)][std::size_t(j)], j % s.members);
     }
   }
+  // On the m = 4 network the members on E3 and E4 are behind both relays, unless listed direct.
+  for (int i = 0; i < s.members; ++i) {
+    const bool on_e3_or_e4 = s.relayed && (s.direct_first ? i == 3 || i == 0 : i >= 2);
+    const bool behind = on_e3_or_e4 && !(s.direct_first && i == 0);
+    EXPECT_EQ(o.behind[std::size_t(i)], std::make_pair(behind, behind)) << "member " << i;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(PipelineProcessStages, EveryLoop,
                          ::testing::Values(Loop{5, 2, 3, 4}, Loop{5, 1, 1, 2}, Loop{6, 3, 4, 3},
                                            Loop{2, 3, 2, 2}, Loop{7, 4, 3, 3, true},
-                                           Loop{3, 4, 2, 2, true}));
+                                           Loop{3, 4, 2, 2, true},
+                                           Loop{7, 4, 3, 3, true, false, true},
+                                           Loop{7, 4, 2, 2, true, false, false, true}));
 
 // A stop in the last round ends every process -- the relays included, which would otherwise wait
 // for the rest of their plan -- and the rounds before it are complete. Length 3: member 3 (behind
@@ -254,5 +285,84 @@ TEST(PipelineProcessStages, AProcessStageIsNotBufferedByTheSkeleton) {
   auto group = [](Process&, const StageEnds<INT, INT>&) {};
   EXPECT_THROW(pipeline<INT>().process_group<INT>("g", 2, group).relayed(wrong), std::logic_error);
 }
+
+}  // namespace
+
+namespace {
+
+using namespace t800sim;
+
+std::map<std::string, std::pair<std::string, std::string>> channel_ends(const Builder& b) {
+  std::map<std::string, std::pair<std::string, std::string>> ends;
+  for (const auto& c : b.declared_channels()) ends[c.name] = {c.writer, c.reader};
+  return ends;
+}
+
+// A member listed as direct is never behind a relay, even where it has no link to the stage next
+// to it: member 0 on E3 (linked to X and Y only) gets channels of its own to spread and from
+// gather, and the relays serve member 3 (E4) alone. (Member 2 is on E1, L1's and L3's neighbour.)
+TEST(PipelineProcessStages, ADirectMemberIsNeverBehindARelay) {
+  const Loop s{7, 4, 3, 3, true, false, true};
+  const network::Topology topology = loop_network(s);
+  Builder b(topology);
+  build_loop(b, s, nullptr);
+  std::map<std::string, std::vector<std::string>> on;
+  std::map<std::string, std::string> placed;
+  for (const ProcessDecl& d : b.declared_processes()) {
+    on[d.name] = d.on;
+    placed[d.name] = d.on.front();
+  }
+  EXPECT_EQ(on["work"], (std::vector<std::string>{"E3", "E2", "E1", "E4"}));
+  EXPECT_EQ(placed.count("work_fan_out_to0"), 0u);
+  EXPECT_EQ(placed.count("work_fan_in_from0"), 0u);
+  EXPECT_EQ(placed["work_fan_out_to3"], "X");
+  EXPECT_EQ(placed["work_fan_in_from3"], "Y");
+  const auto ends = channel_ends(b);
+  EXPECT_EQ(ends.at("spread->work[0][0]"),
+            std::make_pair(std::string("spread"), std::string("work[0]")));
+  EXPECT_EQ(ends.at("work->gather[0][0]"),
+            std::make_pair(std::string("work[0]"), std::string("gather")));
+  EXPECT_EQ(ends.count("work_fan_out->work[0][0]"), 0u);
+  EXPECT_EQ(ends.count("work->work_fan_in[0][0]"), 0u);
+}
+
+// What a relay forwards is named by the plan's labels, else by the channel it goes out on. A fault
+// on the first byte through X -> E4 hits the step's header, the first message E4 gets; on Y -> L3
+// it hits element 2, the first message gather takes through Y (element j comes from member j mod 4;
+// members 2 and 3 are behind Y). An element is Sequential<INT, INT, INT>: three communications of
+// 4 bytes, the first hit (a part whose value the simulation carries with the last).
+struct LabelCase {
+  bool labelled;
+  const char* from;
+  const char* to;
+  const char* message;
+};
+
+void PrintTo(const LabelCase& c, std::ostream* os) {
+  *os << (c.labelled ? "labelled_" : "unlabelled_") << c.from << "_" << c.to;
+}
+
+class RelayLabels : public ::testing::TestWithParam<LabelCase> {};
+
+TEST_P(RelayLabels, TheRelaysNameWhatTheyForwardAsThePlanSays) {
+  const LabelCase c = GetParam();
+  Loop s{7, 4, 2, 2, true};
+  s.labelled = c.labelled;
+  network::FaultSpec f;
+  f.kind = network::FaultSpec::Kind::corrupt;
+  f.from = c.from;
+  f.to = c.to;
+  std::vector<network::FaultRecord> records;
+  run_loop(s, {f}, &records);
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_EQ(records[0].hit, std::string("byte 1 of 4 of message '") + c.message +
+                                "' changed (its value is not modelled)");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    PipelineProcessStages, RelayLabels,
+    ::testing::Values(LabelCase{true, "X", "E4", "header"}, LabelCase{true, "Y", "L3", "element 2"},
+                      LabelCase{false, "X", "E4", "work_fan_out->work[0][3]"},
+                      LabelCase{false, "Y", "L3", "work_fan_in->gather[0][0]"}));
 
 }  // namespace

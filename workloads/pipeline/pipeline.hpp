@@ -14,19 +14,19 @@
 // PipelineSettings::buffered runs each level-2 processor as a buffered stage (input, eliminator,
 // output in PAR); docs/table6.md compares these structures against Table 6.
 // The levels are PipelineProgram (pipeline_program.hpp) serving one system from the host; the
-// trajectory workload runs the same program for every evaluation. Each level is a process of its own
-// (levels/level1.hpp .. level4.hpp) that owns its state and talks to the others only through channels;
-// the messages and their bytes are levels/messages.hpp.
-// Every level calls the same pieces as the sequential solver (workloads/elimination/gauss.hpp), so
-// q̈ is bit-identical to elimination::solve at the same precision and pivoting. Costs come from the
-// pieces' counted work through the machine's CostModel; message sizes follow from each message's
-// protocol (levels/messages.hpp): the REAL32/REAL64 rows plus one INT32 header word (row number or
-// step, and a status flag).
+// trajectory workload runs the same program for every evaluation. Each level is a process of its
+// own (levels/level1.hpp .. level4.hpp) that owns its state and talks to the others only through
+// channels; the messages and their bytes are levels/messages.hpp. Every level calls the same pieces
+// as the sequential solver (workloads/elimination/gauss.hpp), so q̈ is bit-identical to
+// elimination::solve at the same precision and pivoting. Costs come from the pieces' counted work
+// through the machine's CostModel; message sizes follow from each message's protocol
+// (levels/messages.hpp): the REAL32/REAL64 rows plus one INT32 header word (row number or step, and
+// a status flag).
 //
 // Tp: from the moment L1 has received the system from the host until L4 has q̈ (the host link's
 // input time is reported apart as input_us). The topologies are configs/topologies/
 // elimination-m1..m5.toml; processors are found by name: L1, E1..Em, L3, L4 (X and Y, where
-// present, are link processors that run only the relays of relay.hpp).
+// present, are link processors that run only the SDK's relays, t800sim/relay.hpp).
 #pragma once
 
 #include <memory>

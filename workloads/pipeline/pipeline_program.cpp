@@ -5,13 +5,15 @@
 #include <numeric>
 #include <stdexcept>
 #include <tuple>
+#include <type_traits>
 
+#include "sdk/realise.hpp"
 #include "t800/link_timing.hpp"
+#include "t800sim/pipeline.hpp"
 #include "workloads/pipeline/levels/level1.hpp"
 #include "workloads/pipeline/levels/level2.hpp"
 #include "workloads/pipeline/levels/level3.hpp"
 #include "workloads/pipeline/levels/level4.hpp"
-#include "workloads/pipeline/relay.hpp"
 #include "workloads/setting_error.hpp"
 
 namespace workloads {
@@ -49,11 +51,18 @@ PipelineNodes find_pipeline_nodes(const network::Topology& t, int m) {
 }
 
 // The pipeline's processes (levels/level1.hpp .. level4.hpp, one object per process, each owning
-// its state), the channels between them, the report they write, and the client's side.
+// its state), declared through the SDK's pipeline skeleton (t800sim/pipeline.hpp) -- L1, L3 and L4
+// process stages, level 2 a process group reached through the link processors X and Y where L1 or
+// L3 has no link to it, the loop L3 -> L1 a channel of the program -- the report they write, and
+// the client's side.
 template <class T>
 class PipelineProgram<T>::Levels {
   using M = levels::Messages<T>;
   using C = typename M::C;
+  using System = typename M::System;
+  using Packet = typename M::Packet;
+  using SdkProcess = t800sim::Process;
+  static constexpr const char* kClient = "client";
 
  public:
   Levels(const PipelineSettings& s, const PipelineNodes& n, int unknowns)
@@ -65,9 +74,7 @@ class PipelineProgram<T>::Levels {
       throw std::invalid_argument("elimination pipeline: overlap serves one system only");
     if (settings.recovery && serve != Serve::once)
       throw std::invalid_argument("elimination pipeline: recovery serves one system only");
-    wiring_ = levels::Wiring::plan(machine, shape, nodes, client, serve, spawn_fan_out<T>,
-                                   spawn_fan_in<T>);
-    const levels::Context<T> context{settings, shape, nodes, wiring_, report_, pieces_, serve};
+    const levels::Context<T> context{settings, shape, nodes, report_, pieces_, serve};
     // Recovery: a message that has started arrives within twice the longest message's time on a
     // link, and 10 us.
     const t800::LinkTiming link(machine.options().link);
@@ -81,32 +88,113 @@ class PipelineProgram<T>::Levels {
       level2_.push_back(std::make_unique<levels::Level2<T>>(context, e));
     level3_ = std::make_unique<levels::Level3<T>>(context, longest_message_us);
     level4_ = std::make_unique<levels::Level4<T>>(context);
-    // Each level a process of the SDK (t800sim::Process) on its processor.
-    auto spawn = [&machine](int node, const char* name,
-                            std::function<void(t800sim::Process&)> body) {
-      machine.spawn(node, name, t800::Priority::low, [body](Process& p) {
-        t800sim::Process level(p);
-        body(level);
-      });
-    };
-    using SdkProcess = t800sim::Process;
-    spawn(nodes.l1, "level1", [this](SdkProcess& p) {
-      levels::loop(serve_, p, [this](SdkProcess& q) { return level1_->round(q); });
-    });
-    for (int e = 0; e < shape.m; ++e)
-      spawn(nodes.e[std::size_t(e)], "level2", [this, e](SdkProcess& p) {
-        levels::Level2<T>& level = *level2_[std::size_t(e)];
-        if (settings.recovery) return level.checked(p);
-        levels::loop(serve_, p, [&level](SdkProcess& q) { return level.round(q); });
-      });
-    spawn(nodes.l3, "level3", [this](SdkProcess& p) {
-      if (settings.recovery) return void(level3_->checked(p));
-      levels::loop(serve_, p, [this](SdkProcess& q) { return level3_->round(q); });
-    });
-    spawn(nodes.l4, "level4", [this](SdkProcess& p) {
-      levels::loop(serve_, p, [this](SdkProcess& q) { return level4_->round(q); });
-    });
+    builder_ = std::make_unique<t800sim::Builder>(machine.topology());
+    builder_->attach(machine);
+    // The client is the caller's process, spawned by it: declared so the channels reach it.
+    t800sim::ProcessDecl& c = builder_->process(kClient, nullptr);
+    if (client == network::Machine::kHost)
+      c.placed_on_host();
+    else
+      c.placed_on(machine.node_name(client));
+    // Recovery's messages carry checksums on the same boundaries (Messages::Checked).
+    if (settings.recovery)
+      declare<typename M::Checked>(*builder_);
+    else
+      declare<Packet>(*builder_);
+    t800sim::detail::realise("elimination pipeline", *builder_, machine, {});
     declare_code(machine);
+  }
+
+  // The levels as the skeleton's stages, each a process on its processor: Msg is the protocol
+  // between L1, level 2 and L3 (and on the loop back to L1). Until finish, the levels serve until
+  // the client's finish (a stop) passes through them and q̈ goes back to the client; once, they
+  // serve one system and q̈ stays on L4.
+  template <class Msg>
+  void declare(t800sim::Builder& b) {
+    const int rounds = serve_ == Serve::once ? 1 : t800sim::kUntilStop;
+    const t800sim::Chan<Msg> back = b.channel<Msg>("level3->level1", "level3", "level1");
+    std::vector<std::string> level2_on;
+    for (int e = 0; e < shape.m; ++e) level2_on.push_back(PipelineNodes::level2_name(e));
+    auto front =
+        t800sim::pipeline<System>()
+            .template process_stage<Msg>(
+                "level1",
+                [this, back](SdkProcess& p, const t800sim::StageEnds<System, Msg>& e) {
+                  level1_->attach(levels::Ends::of(e, back.in().slot()));
+                  levels::loop(e.rounds, p, [this](SdkProcess& q) { return level1_->round(q); });
+                })
+            .on(PipelineNodes::kLevel1)
+            .template process_group<Msg>(
+                "level2", shape.m,
+                [this](SdkProcess& p, const t800sim::StageEnds<Msg, Msg>& e) {
+                  levels::Level2<T>& level = *level2_[std::size_t(e.member)];
+                  level.attach(levels::Ends::of(e));
+                  if (settings.recovery) return level.checked(p);
+                  levels::loop(e.rounds, p, [&level](SdkProcess& q) { return level.round(q); });
+                })
+            .on(level2_on);
+    if constexpr (std::is_same_v<Msg, Packet>) {
+      const t800sim::RelayPlan<Packet, Packet> plan = relay_plan(b.network());
+      if (!plan.fan_out.empty() || !plan.fan_in.empty()) front = std::move(front).relayed(plan);
+    }
+    pipe_ =
+        std::move(front)
+            .template process_stage<Packet>(
+                "level3",
+                [this, back](SdkProcess& p, const t800sim::StageEnds<Msg, Packet>& e) {
+                  level3_->attach(levels::Ends::of(e, back.out().slot()));
+                  if (settings.recovery) return void(level3_->checked(p));
+                  levels::loop(e.rounds, p, [this](SdkProcess& q) { return level3_->round(q); });
+                })
+            .on(PipelineNodes::kLevel3)
+            .template process_stage<Packet>(
+                "level4",
+                [this](SdkProcess& p, const t800sim::StageEnds<Packet, Packet>& e) {
+                  level4_->attach(levels::Ends::of(e));
+                  levels::loop(e.rounds, p, [this](SdkProcess& q) { return level4_->round(q); });
+                })
+            .on(PipelineNodes::kLevel4)
+            .build(b, kClient, serve_ == Serve::until_finish ? kClient : "", rounds);
+  }
+
+  // The link processors X (between L1 and the level-2 processors it has no link to) and Y
+  // (between those and L3), where the topology has them. A relay round is one step k: the pivot
+  // row to every level-2 processor that takes part, then rows 1 .. n-1-k each to its owner; back,
+  // the rows in order from their owners. E1 forwards each pivot row to L3 outside that plan, so it
+  // always has channels of its own; a failure a processor behind Y reports ends Y, and E1 tells L3.
+  // Serving once, the relays serve the n steps of one system; until finish, until a stop.
+  t800sim::RelayPlan<Packet, Packet> relay_plan(const t800sim::Network& network) const {
+    t800sim::RelayPlan<Packet, Packet> plan;
+    plan.fan_out = network.find("X") >= 0 ? "X" : "";
+    plan.fan_in = network.find("Y") >= 0 ? "Y" : "";
+    const PipelineShape s = shape;
+    plan.rounds = serve_ == Serve::once ? s.n : t800sim::kUntilStop;
+    plan.scatter = [s](int r) {
+      const int k = r % s.n;
+      std::vector<int> all(static_cast<std::size_t>(s.m));
+      std::iota(all.begin(), all.end(), 0);
+      std::vector<std::vector<int>> messages{s.takers(all, k)};
+      for (int i = 1; i <= s.n - 1 - k; ++i) messages.push_back({s.owner(std::size_t(i))});
+      return messages;
+    };
+    plan.gather = [s](int r) {
+      std::vector<int> owners;
+      for (int i = 1; i <= s.n - 1 - r % s.n; ++i) owners.push_back(s.owner(std::size_t(i)));
+      return owners;
+    };
+    plan.stops_in = [](const typename M::PacketValue& m) {
+      return (std::get<0>(m) & levels::header::kStop) != 0;
+    };
+    plan.stops_out = plan.stops_in;
+    plan.fan_in_passes_stop = false;
+    plan.direct = {0};
+    plan.label_in = [stops = plan.stops_in](const typename M::PacketValue& m, int, int index) {
+      return std::string(stops(m) ? levels::kFailLabel : index == 0 ? "pivot row" : "row");
+    };
+    plan.label_out = [stops = plan.stops_in](const typename M::PacketValue& m, int, int) {
+      return std::string(stops(m) ? levels::kFailLabel : "row");
+    };
+    return plan;
   }
 
   // Each level's code, for the footprints of its processors: its pieces recorded on a
@@ -120,7 +208,7 @@ class PipelineProgram<T>::Levels {
       s.b.push_back(C(1));
     }
     const auto& rule = settings.rule;
-    auto declare = [&](int node, const char* process, const t800::ComputeWork& work) {
+    auto declare = [&](int node, const std::string& process, const t800::ComputeWork& work) {
       machine.declare_code(node, process, work.code);
     };
     auto [m, augment] = pieces_.run(
@@ -147,7 +235,8 @@ class PipelineProgram<T>::Levels {
     auto [row, eliminate] = pieces_.run(
         "eliminate", [](auto& r, auto& j1) { return elimination::eliminate(r, j1); },
         named("row", m[1]), named("pivot", step.normalised));
-    for (int e : nodes.e) declare(e, "level2", eliminate);
+    for (int e = 0; e < shape.m; ++e)
+      declare(nodes.e[std::size_t(e)], "level2[" + std::to_string(e) + "]", eliminate);
     Rows<C> rows(std::size_t(n() - 1), row);
     C bound = elimination::growth_bound(scale, rule);
     declare(nodes.l3, "level3",
@@ -172,15 +261,14 @@ class PipelineProgram<T>::Levels {
       throw std::logic_error("elimination pipeline: send after a failed round or finish");
     report_.begin_round();
     report_.outcome.input_start_us = p.now_us();
-    t800sim::Process(p).out(system_out(), M::system(system), "system");
+    t800sim::Process(p).out(pipe_.in(0), M::system(system), "system");
     if (serve_ == Serve::once) stopped_ = true;  // the levels take one system and end
   }
 
   void receive(Process& p) {
-    if (!wiring_.reply)
+    if (serve_ != Serve::until_finish)
       throw std::logic_error("elimination pipeline: solve() needs Serve::until_finish");
-    const auto answer =
-        t800sim::Process(p).in(t800sim::In<typename M::Packet>(wiring_.typed(wiring_.reply)));
+    const auto answer = t800sim::Process(p).in(pipe_.out(0));
     report_.outcome.returned_us = p.now_us();
     if (std::get<0>(answer) & levels::header::kStop) stopped_ = true;
   }
@@ -188,7 +276,7 @@ class PipelineProgram<T>::Levels {
   void finish(Process& p) {
     if (stopped_) return;
     stopped_ = true;
-    t800sim::Process(p).out(system_out(), M::finish(), "finish");
+    t800sim::Process(p).out(pipe_.in(0), M::finish(), "finish");
   }
 
   const PipelineOutcome& outcome() const { return report_.outcome; }
@@ -199,13 +287,11 @@ class PipelineProgram<T>::Levels {
 
  private:
   int n() const { return shape.n; }
-  t800sim::Out<typename M::System> system_out() const {
-    return t800sim::Out<typename M::System>(wiring_.typed(wiring_.input));
-  }
 
   Serve serve_ = Serve::once;
-  bool stopped_ = false;  // the client's view: no more rounds
-  levels::Wiring wiring_;
+  bool stopped_ = false;                       // the client's view: no more rounds
+  std::unique_ptr<t800sim::Builder> builder_;  // owns the channels the levels' ends name
+  t800sim::Pipeline<System, Packet> pipe_;     // the client's ends
   levels::Report report_;
   PieceCode<T> pieces_;  // each piece's recorded T800 code, for the cost model
   std::unique_ptr<levels::Level1<T>> level1_;

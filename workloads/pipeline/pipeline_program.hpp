@@ -2,7 +2,8 @@
 // client process (the host for Table 6, the farm's master in a trajectory) sends one system at a
 // time to L1 and, when the program serves until finish(), gets q̈ back from L4; the levels loop
 // over rounds until the client calls finish(). The levels, their channels and the relays are
-// described in pipeline.hpp; each level is a process of its own in levels/.
+// described in pipeline.hpp; each level is a process of its own in levels/, a stage of the SDK's
+// pipeline skeleton (t800sim/pipeline.hpp).
 //
 // A failed round (no usable pivot, a non-finite value) stops every level, as in the one-shot
 // pipeline: the client gets the failure and must not send again (finish() is then a no-op).
@@ -86,8 +87,10 @@ class PipelineProgram {
   PipelineProgram(const PipelineProgram&) = delete;
   PipelineProgram& operator=(const PipelineProgram&) = delete;
 
-  // Before the run: declares the channels (client -> L1, and L4 -> client when serving until
-  // finish), spawns the relays and the four levels.
+  // Before the run: declares the four levels, the relays and their channels (client -> L1, and
+  // L4 -> client when serving until finish) through the SDK's pipeline skeleton, on a Builder of
+  // its own, and makes them real on the machine. `client` is the caller's process's processor
+  // (network::Machine::kHost: the host), spawned by the caller.
   void build(network::Machine& machine, int client, Serve serve);
   // From the client's process: sends the system to L1 (its REAL values) and starts a round.
   void send(network::Process& client, const elimination::LinearSystem<S>& system);

@@ -28,6 +28,22 @@ struct PipelineShape {
   // Processor e takes part in step k when it has a row, and E1 always: it forwards the pivot row
   // to level 3 (which keeps the rows of U for level 4).
   bool participates(int k, int e) const { return e == 0 || !rows_for(k, e).empty(); }
+
+  // Of the processors `served` (by one channel), those that take part in step k, and the rows of
+  // step k they eliminate, in the order the channel carries them.
+  std::vector<int> takers(const std::vector<int>& served, int k) const {
+    std::vector<int> out;
+    for (int e : served)
+      if (participates(k, e)) out.push_back(e);
+    return out;
+  }
+  std::vector<std::size_t> rows_of(const std::vector<int>& served, int k) const {
+    std::vector<std::size_t> rows;
+    for (int i = 1; i <= n - 1 - k; ++i)
+      for (int e : served)
+        if (owner(static_cast<std::size_t>(i)) == e) rows.push_back(static_cast<std::size_t>(i));
+    return rows;
+  }
 };
 
 }  // namespace workloads

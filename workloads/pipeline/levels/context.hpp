@@ -1,7 +1,8 @@
-// What every level of the pipeline is given: the settings and shape (read only), the channels
-// (wiring.hpp), the report it writes its observations to (report.hpp), and the record of each
-// piece's T800 code that the cost model prices. No level's state: each level owns its own
-// (level1.hpp .. level4.hpp). Every level is a process of the SDK (t800sim/process.hpp).
+// What every level of the pipeline is given: the settings and shape (read only), the report it
+// writes its observations to (report.hpp), and the record of each piece's T800 code that the cost
+// model prices. No level's state or channels: each level owns its own (level1.hpp .. level4.hpp;
+// its channels, ends.hpp, come from the pipeline skeleton). Every level is a process of the SDK
+// (t800sim/process.hpp).
 #pragma once
 
 #include <functional>
@@ -13,9 +14,9 @@
 #include "t800sim/process.hpp"
 #include "t800sim/shared.hpp"
 #include "workloads/pipeline/checksum.hpp"
+#include "workloads/pipeline/levels/ends.hpp"
 #include "workloads/pipeline/levels/messages.hpp"
 #include "workloads/pipeline/levels/report.hpp"
-#include "workloads/pipeline/levels/wiring.hpp"
 #include "workloads/pipeline/piece_code.hpp"
 #include "workloads/pipeline/pipeline_program.hpp"
 
@@ -30,7 +31,6 @@ struct Context {
   const PipelineSettings& settings;
   const PipelineShape& shape;
   const PipelineNodes& nodes;
-  const Wiring& wiring;
   Report& report;
   PieceCode<T>& pieces;
   Serve serve;
@@ -46,30 +46,19 @@ struct Context {
     return std::move(result);
   }
 
-  // A packet over a channel of the wiring, through its typed end: the bytes from the protocol,
-  // `label` naming it in traces and fault reports.
+  // A packet over a level's channel, through its typed end: the bytes from the protocol, `label`
+  // naming it in traces and fault reports.
   using Packet = typename Messages<T>::Packet;
   using PacketValue = typename Messages<T>::PacketValue;
-  void send(Process& p, const network::Channel* c, const PacketValue& v,
-            const std::string& label) const {
-    p.out(t800sim::Out<Packet>(wiring.typed(c)), v, label);
+  static void send(Process& p, Slot c, const PacketValue& v, const std::string& label) {
+    p.out(t800sim::Out<Packet>(c), v, label);
   }
-  PacketValue receive(Process& p, const network::Channel* c) const {
-    return p.in(t800sim::In<Packet>(wiring.typed(c)));
-  }
-  // The client's system (or finish), L1's end.
-  t800sim::In<typename Messages<T>::System> system_in() const {
-    return t800sim::In<typename Messages<T>::System>(wiring.typed(wiring.input));
-  }
+  static PacketValue receive(Process& p, Slot c) { return p.in(t800sim::In<Packet>(c)); }
 
-  // Recovery's messages (Messages::Checked) over the same channels.
+  // Recovery's messages (Messages::Checked) over the same boundaries.
   using Checked = typename Messages<T>::Checked;
-  t800sim::Out<Checked> checked_out(const network::Channel* c) const {
-    return t800sim::Out<Checked>(wiring.typed(c));
-  }
-  t800sim::In<Checked> checked_in(const network::Channel* c) const {
-    return t800sim::In<Checked>(wiring.typed(c));
-  }
+  static t800sim::Out<Checked> checked_out(Slot c) { return t800sim::Out<Checked>(c); }
+  static t800sim::In<Checked> checked_in(Slot c) { return t800sim::In<Checked>(c); }
 
   // The checksum loop over a message of `count` REALs and its header, on p's processor.
   void charge_checksum(Process& p, std::size_t count) const {
@@ -93,10 +82,11 @@ inline void par(Process& p, const std::vector<Process::Body>& branches) {
   p.par(branches);
 }
 
-// Once: one round. Until finish: rounds until the level sees the finish (or a failure) and stops.
+// A level's rounds (StageEnds::rounds: one system, or until the level sees the finish or a
+// failure, kUntilStop); a round returns false when the level stops.
 template <class Round>
-void loop(Serve serve, Process& p, Round round) {
-  for (int r = 0; serve == Serve::until_finish || r < 1; ++r)
+void loop(int rounds, Process& p, Round round) {
+  for (int r = 0; rounds == t800sim::kUntilStop || r < rounds; ++r)
     if (!round(p)) return;
 }
 

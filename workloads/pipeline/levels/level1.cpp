@@ -5,13 +5,11 @@
 #include <numeric>
 #include <string>
 
-#include "workloads/pipeline/relay.hpp"
-
 namespace workloads::levels {
 
 template <class T>
 bool Level1<T>::round(Process& p) {
-  const auto input = M::system_of(p.in(c_.system_in()));
+  const auto input = M::system_of(p.in(t800sim::In<typename M::System>(ends_.from[0])));
   if (!input) {
     send_stop(p, 0, true);
     return false;
@@ -137,7 +135,7 @@ void Level1<T>::receive_streamed(Process& p) {
     if (handed_ < s) return;
     Rows& m = matrices_[std::size_t(s)];
     for (int r = 0; r < c_.n() - s; ++r) {
-      auto row = M::returned_row_of(c_.receive(p, c_.wiring.back));
+      auto row = M::returned_row_of(c_.receive(p, ends_.back));
       if (row.index >= m.size())
         p.stop("row number " + std::to_string(row.index) + " out of range");
       m[row.index] = std::move(row.values);
@@ -159,7 +157,7 @@ template <class T>
 bool Level1<T>::receive_reduced(Process& p, std::size_t rows, Rows& m) {
   Rows reduced;
   for (std::size_t i = 0; i < rows; ++i) {
-    auto row = M::returned_row_of(c_.receive(p, c_.wiring.back));
+    auto row = M::returned_row_of(c_.receive(p, ends_.back));
     if (!row.ok) return false;  // strict: rows come in order
     reduced.push_back(std::move(row.values));
   }
@@ -175,8 +173,8 @@ template <class T>
 bool Level1<T>::send_stop(Process& p, int k, bool finish) {
   std::vector<Process::Body> branches;
   const bool next_round_waits = c_.serve == Serve::until_finish && k > 0;
-  for (const Port& port : c_.wiring.out_ports)
-    if (!Wiring::takers(c_.shape, port, k).empty() || next_round_waits)
+  for (const Port& port : ends_.to_ports)
+    if (!c_.shape.takers(port.served, k).empty() || next_round_waits)
       branches.push_back([this, k, &port, finish](Process& q) {
         c_.send(q, port.channel, M::to_packet(k, M::Pivot::stop(finish)), kFailLabel);
       });
@@ -188,11 +186,11 @@ bool Level1<T>::send_stop(Process& p, int k, bool finish) {
 template <class T>
 void Level1<T>::hand_out(Process& p, int k, const typename M::Pivot& pivot, const Rows& m) {
   std::vector<Process::Body> branches;
-  for (const Port& port : c_.wiring.out_ports) {
-    if (Wiring::takers(c_.shape, port, k).empty()) continue;
+  for (const Port& port : ends_.to_ports) {
+    if (c_.shape.takers(port.served, k).empty()) continue;
     branches.push_back([this, k, &port, &pivot, &m](Process& q) {
       c_.send(q, port.channel, M::to_packet(k, pivot), "pivot row");
-      for (std::size_t i : relay_rows(c_.shape, port.served, k)) {
+      for (std::size_t i : c_.shape.rows_of(port.served, k)) {
         await_row(q, k, i);
         c_.send(q, port.channel, M::to_packet(typename M::RowMessage{i, m[i]}), "row");
       }
@@ -236,7 +234,7 @@ void Level1<T>::hand_out_checked(Process& p, int k, std::vector<std::size_t> row
     branches.push_back([this, e, k, forwarder, growth_check, &given](Process& q) {
       typename M::CheckedPivot pivot = pivot_;
       pivot.forward = forwarder;
-      const auto c = c_.checked_out(c_.wiring.e_in[std::size_t(e)]);
+      const auto c = c_.checked_out(ends_.to[std::size_t(e)]);
       if (!q.out_or_fail(c, M::to_checked(pivot, growth_check), deadline(q), "pivot row")) {
         unused_[std::size_t(e)] = true;
         return;
@@ -259,7 +257,7 @@ void Level1<T>::hand_out_checked(Process& p, int k, std::vector<std::size_t> row
 template <class T>
 bool Level1<T>::next_matrix_checked(Process& p, int k) {
   using ReturnedRow = typename M::ReturnedRow;
-  const auto back = c_.checked_in(c_.wiring.back);
+  const auto back = c_.checked_in(ends_.back);
   for (;;) {
     const typename M::CheckedValue m = p.in(back);
     if (M::is_resend(m)) {
@@ -295,7 +293,7 @@ void Level1<T>::stop_level2(Process& p) {
     branches.push_back([this, e](Process& q) {
       typename M::CheckedPivot stop;
       stop.stop = true;
-      if (q.out_or_fail(c_.checked_out(c_.wiring.e_in[std::size_t(e)]), M::to_checked(stop, false),
+      if (q.out_or_fail(c_.checked_out(ends_.to[std::size_t(e)]), M::to_checked(stop, false),
                         deadline(q), "stop"))
         return;
       const std::vector<std::string> path = Context<T>::path(true, e, false);

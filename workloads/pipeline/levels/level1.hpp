@@ -21,6 +21,8 @@ class Level1 {
       : c_(context), unused_(std::size_t(context.shape.m), false) {}
   // One system; false when the pipeline stops (finish, or a failure every level is told of).
   bool round(Process& p);
+  // Its channels, given when its process starts.
+  void attach(Ends ends) { ends_ = std::move(ends); }
 
  private:
   using M = Messages<T>;
@@ -46,6 +48,7 @@ class Level1 {
   double deadline(const Process& p) const { return p.now_us() + 2 * c_.settings.timeout_us; }
 
   Context<T> c_;
+  Ends ends_;  // from the client; to level 2 (or the fan-out X); back from L3
   // The matrices, one per step (overlap: filled as rows stream back), and what has arrived.
   std::vector<Rows> matrices_;
   std::vector<int> arrived_;

@@ -1,7 +1,5 @@
 #include "workloads/pipeline/levels/level2.hpp"
 
-#include "workloads/pipeline/relay.hpp"
-
 namespace workloads::levels {
 
 template <class T>
@@ -15,8 +13,7 @@ bool Level2<T>::round(t800sim::Process& p) {
     const std::vector<std::size_t> rows = c_.shape.rows_for(k, e);
     if (!pivot.ok) {
       // E1 tells L3; one behind the fan-in tells the fan-in, which waits for its rows.
-      if (e == 0 || c_.wiring.e_behind_fan_in[std::size_t(e)])
-        p.out(output(), pivot_packet, kFailLabel);
+      if (e == 0 || ends_.behind_fan_in) p.out(output(), pivot_packet, kFailLabel);
       return false;
     }
     c_.report.level2(p.now_us(), true);
@@ -107,14 +104,14 @@ void Level2<T>::checked(t800sim::Process& p) {
   using CheckedRow = typename M::CheckedRow;
   const bool growth_check = c_.settings.rule.growth_check();
   auto send = [&](const typename M::CheckedValue& v, const std::string& label) {
-    p.out_or_fail(c_.checked_out(&out()), v, p.now_us() + c_.settings.timeout_us, label);
+    p.out_or_fail(c_.checked_out(ends_.to[0]), v, p.now_us() + c_.settings.timeout_us, label);
   };
   // L1 may give up a message half-way (this processor was slow, or a fault): each message says
   // what it is, so a pivot row may come where a row was due.
   typename M::CheckedPivot pivot;
   bool pivot_intact = false;
   for (;;) {
-    const typename M::CheckedValue m = p.in(c_.checked_in(&in()));
+    const typename M::CheckedValue m = p.in(c_.checked_in(ends_.from[0]));
     if (M::is_pivot(m)) {
       pivot = M::checked_pivot_of(m, growth_check);
       if (pivot.stop) return;

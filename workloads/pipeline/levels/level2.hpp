@@ -18,6 +18,8 @@ class Level2 {
   Level2(const Context<T>& context, int e) : c_(context), e_(e) {}
   // One system; false when the pipeline stops. A process of the SDK: typed channels, packets.
   bool round(t800sim::Process& p);
+  // Its channels, given when its process starts.
+  void attach(Ends ends) { ends_ = std::move(ends); }
   // Recovery: every system until L1's stop.
   void checked(t800sim::Process& p);
 
@@ -27,15 +29,14 @@ class Level2 {
   void eliminate_buffered(t800sim::Process& p, const PacketValue& pivot_packet,
                           const std::vector<std::size_t>& rows);
   t800sim::In<typename M::Packet> input() const {
-    return t800sim::In<typename M::Packet>(c_.wiring.typed(&in()));
+    return t800sim::In<typename M::Packet>(ends_.from[0]);
   }
   t800sim::Out<typename M::Packet> output() const {
-    return t800sim::Out<typename M::Packet>(c_.wiring.typed(&out()));
+    return t800sim::Out<typename M::Packet>(ends_.to[0]);
   }
-  network::Channel& in() const { return *c_.wiring.e_in[std::size_t(e_)]; }
-  network::Channel& out() const { return *c_.wiring.e_out[std::size_t(e_)]; }
 
   Context<T> c_;
+  Ends ends_;      // from L1 (or the fan-out X), to L3 (or the fan-in Y)
   int e_;          // 0-based: E1 is 0
   Shared buffer_;  // buffered: the one-row buffers between input, eliminator and output
 };

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "t800sim/alt.hpp"
-#include "workloads/pipeline/relay.hpp"
 
 namespace workloads::levels {
 
@@ -14,11 +13,10 @@ using elimination::Status;
 
 template <class T>
 bool Level3<T>::round(Process& p) {
-  const Wiring& w = c_.wiring;
   C bound = C(0);
   bool unstable = false;
   for (int k = 0; k < c_.n(); ++k) {
-    Pivot pivot = M::pivot_of(c_.receive(p, w.e_out[0]));
+    Pivot pivot = M::pivot_of(c_.receive(p, ends_.from[0]));
     if (!pivot.ok) {
       to_l4(p, k, pivot, kFailLabel);
       return false;
@@ -76,8 +74,8 @@ template <class T>
 void Level3<T>::take_rows(std::vector<Process::Body>& branches, int k, Rows& rows,
                           std::function<void(std::size_t)> arrived) {
   using RowMessage = typename M::RowMessage;
-  for (const Port& port : c_.wiring.in_ports) {
-    const std::vector<std::size_t> expected = relay_rows(c_.shape, port.served, k);
+  for (const Port& port : ends_.from_ports) {
+    const std::vector<std::size_t> expected = c_.shape.rows_of(port.served, k);
     if (expected.empty()) continue;
     branches.push_back([this, &port, expected, &rows, arrived](Process& q) {
       for (std::size_t count = expected.size(); count > 0; --count) {
@@ -141,7 +139,7 @@ void Level3<T>::forward(Process& p, int k, elimination::Row<C>& row, std::size_t
                    "level 3: a non-finite value in row " + std::to_string(i + 1) + " of step " +
                        std::to_string(k));
   if (check.status == Status::unstable) unstable_at(k, unstable);
-  c_.send(p, c_.wiring.back, M::to_packet(typename M::ReturnedRow{true, std::move(row), i}),
+  c_.send(p, ends_.back, M::to_packet(typename M::ReturnedRow{true, std::move(row), i}),
           "reduced row");
 }
 
@@ -204,7 +202,7 @@ bool Level3<T>::collect_checked(Process& p, int k, CheckedPivot& pivot, Rows& ro
     };
     if (request) {
       par(p, {[&](Process& q) {
-                q.out(c_.checked_out(c_.wiring.back), M::to_checked(*request), "resend");
+                q.out(c_.checked_out(ends_.back), M::to_checked(*request), "resend");
               },
               receive});
     } else {
@@ -240,7 +238,7 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
                              std::vector<bool>& have, std::vector<int>& damaged,
                              double first_wait_us) {
   using CheckedRow = typename M::CheckedRow;
-  const auto& e_out = c_.wiring.e_out;
+  const auto& e_out = ends_.from;
   const int m = c_.shape.m;
   const auto ticks = std::int64_t(std::ceil(c_.settings.timeout_us / p.tick_us()));
   std::int64_t after = p.clock() + std::int64_t(std::ceil(first_wait_us / p.tick_us()));
@@ -289,14 +287,14 @@ void Level3<T>::receive_step(Process& p, int k, CheckedPivot& pivot, Rows& rows,
 template <class T>
 void Level3<T>::send_back(Process& p, const typename M::ReturnedRow& row, const char* label) const {
   if (c_.settings.recovery)
-    p.out(c_.checked_out(c_.wiring.back), M::to_checked(row), label);
+    p.out(c_.checked_out(ends_.back), M::to_checked(row), label);
   else
-    c_.send(p, c_.wiring.back, M::to_packet(row), label);
+    c_.send(p, ends_.back, M::to_packet(row), label);
 }
 
 template <class T>
 void Level3<T>::to_l4(Process& p, int k, const Pivot& pivot, const char* label) const {
-  c_.send(p, c_.wiring.to_l4, M::to_packet(k, pivot), label);
+  c_.send(p, ends_.to[0], M::to_packet(k, pivot), label);
 }
 
 template <class T>

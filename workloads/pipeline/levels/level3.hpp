@@ -23,6 +23,8 @@ class Level3 {
       : c_(context), longest_message_us_(longest_message_us) {}
   // One system; false when the pipeline stops.
   bool round(Process& p);
+  // Its channels, given when its process starts.
+  void attach(Ends ends) { ends_ = std::move(ends); }
   // Recovery: one system, checked.
   bool checked(Process& p);
 
@@ -52,6 +54,7 @@ class Level3 {
   void to_l4(Process& p, int k, const Pivot& pivot, const char* label) const;
 
   Context<T> c_;
+  Ends ends_;  // from level 2 (or the fan-in Y); to L4; back to L1
   double longest_message_us_;
   Shared shared_;           // overlap: the rows the receiving branches have stored
   std::vector<bool> lost_;  // recovery: level-2 processors L3 no longer listens to

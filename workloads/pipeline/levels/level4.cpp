@@ -2,17 +2,16 @@
 
 #include <tuple>
 
-#include "workloads/pipeline/relay.hpp"
-
 namespace workloads::levels {
 
 template <class T>
 bool Level4<T>::round(t800sim::Process& p) {
   using C = typename M::C;
   using Packet = typename M::Packet;
-  const Wiring& w = c_.wiring;
-  const t800sim::In<Packet> u_rows(w.typed(w.to_l4));
-  const t800sim::Out<Packet> answer(w.typed(w.reply));
+  const t800sim::In<Packet> u_rows(ends_.from[0]);
+  // Serving until finish, q̈ goes to the client; once, it stays here.
+  const Slot reply = ends_.to.empty() ? nullptr : ends_.to[0];
+  const t800sim::Out<Packet> answer(reply);
   PipelineOutcome& outcome = c_.report.outcome;
   elimination::Rows<C> upper;
   bool unstable = false;
@@ -22,7 +21,7 @@ bool Level4<T>::round(t800sim::Process& p) {
     if (flags & header::kStop) {
       if (flags & header::kFinish) return false;
       outcome.end_us = p.now_us();
-      if (w.reply) p.out(answer, M::answer(false, {}), kFailLabel);
+      if (reply) p.out(answer, M::answer(false, {}), kFailLabel);
       return false;
     }
     unstable = unstable || (flags & header::kUnstable);
@@ -40,7 +39,7 @@ bool Level4<T>::round(t800sim::Process& p) {
     values.push_back(static_cast<double>(v.value()));
   }
   const std::vector<double>& qdd = c_.report.solved(values, finite, unstable, c_.n());
-  if (w.reply) p.out(answer, M::answer(true, qdd), "qdd");
+  if (reply) p.out(answer, M::answer(true, qdd), "qdd");
   return true;
 }
 

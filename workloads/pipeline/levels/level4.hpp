@@ -14,10 +14,13 @@ class Level4 {
   explicit Level4(const Context<T>& context) : c_(context) {}
   // One system; false when the pipeline stops (finish, or a failure).
   bool round(t800sim::Process& p);
+  // Its channels, given when its process starts.
+  void attach(Ends ends) { ends_ = std::move(ends); }
 
  private:
   using M = Messages<T>;
   Context<T> c_;
+  Ends ends_;  // from L3; to the client when serving until finish
 };
 
 extern template class Level4<float>;

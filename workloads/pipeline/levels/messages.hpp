@@ -21,6 +21,9 @@
 
 namespace workloads::levels {
 
+// The trace label of a stop message (a bare header word); control flow reads the value, not this.
+constexpr const char* kFailLabel = "fail";
+
 // The header word of a packet (Messages::Packet): a number (a row's, or a step) in the low bits,
 // status flags in the high ones, as the occam program's header word has them. A stop ends the
 // pipeline: a failure, or with kFinish the client's finish; kUnstable: the pivots have grown past
