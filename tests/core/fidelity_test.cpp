@@ -178,6 +178,9 @@ TEST(Fidelity, MessageAndAutoEqualPacketOnAOneWayLink) {
           ASSERT_GE(packet[1], 0) << describe(e);
           const Values runs = in_child([&] { return exchange(e, LinkFidelity::packet); });
           expect_same_results(packet, runs, describe(e) + " packet runs");
+          EXPECT_EQ(runs[13], bytes >= 3 ? 3 : 0) << describe(e)
+                                                  << ": every message of 3 bytes or "
+                                                     "more should be one run";
           for (LinkFidelity f : {LinkFidelity::message, LinkFidelity::automatic}) {
             const Values other = in_child([&] { return exchange(e, f); });
             expect_same_results(packet, other, describe(e) + " " + std::string(t800::to_string(f)));
