@@ -217,7 +217,7 @@ bool Link::start_packet(int w) {
     } else if (own.acks_pending > 0) {
       return send_ack_packet(w);
     } else if (data_waiting && own.sent == 0 && dir_[1 - w].closed_form.active &&
-               fidelity_ == LinkFidelity::automatic) {
+               fidelity_ != LinkFidelity::message) {
       hand_over(1 - w);  // this direction starts: the other's closed form no longer holds
     } else if (data_waiting && own.sent == 0 && closed_form_allowed(w)) {
       start_closed_form(w);
@@ -446,10 +446,20 @@ void Link::count_receiver(int di) {
 // (LinkTiming). The sender goes on when the last acknowledge ends; the receiver has the message
 // when the last byte has arrived and its input is armed.
 
+// At `packet` a closed form is a run: the packets of a message nothing can interleave with,
+// planned from one event (and again when its input is armed: arm_input). No fault or deadline may
+// be in play (they act on packets), and the other direction must be silent, as at `automatic`;
+// when that direction starts, or a resetch comes, hand_over puts the packet level's state in place
+// at that instant. A message of fewer than 3 bytes saves nothing. Its last byte goes packet by
+// packet (on_closed_form), so the message's end -- the sender released, the message delivered --
+// comes from the same events as without the run: two processes released at one instant are then
+// queued in the same order.
 bool Link::closed_form_allowed(int di) const {
   switch (fidelity_) {
     case LinkFidelity::packet:
-      return false;
+      if (!packet_runs_ || faulted_ || deadline_waits_ > 0 || dir_[di].queue.front().bytes < 3)
+        return false;
+      break;
     case LinkFidelity::message:
       return true;
     case LinkFidelity::automatic:
@@ -517,6 +527,11 @@ void Link::on_closed_form(int di) {
   ClosedForm& cf = d.closed_form;
   if (!cf.active || !cf.armed) return;
   const sc_time now = sc_time_stamp();
+  if (fidelity_ == LinkFidelity::packet) {  // a run: handed to the packet level at its last byte
+    const sc_time last = byte_start(cf, cf.bytes);
+    if (now >= last) return hand_over(di);
+    return cf.milestone.notify(last - now);
+  }
   const sc_time done = sender_done_time(di), delivered = delivery_time(di);
   if (!cf.sender_done && now >= done) closed_form_sender_done(di);
   if (!cf.delivered && now >= delivered) {
@@ -653,6 +668,8 @@ void Link::hand_over(int di) {
 void Link::arm_fault() {
   faulted_ = true;
   fidelity_ = LinkFidelity::packet;  // faults act on packets
+  for (int d = 0; d < 2; ++d)
+    if (dir_[d].closed_form.active) hand_over(d);  // a run planned before the fault was known
 }
 
 void Link::drop_byte(int d, const sc_time& at, FaultHit hit) {

@@ -10,7 +10,10 @@
 // concurrently with the CPUs.
 //
 // Fidelity (t800/fidelity.hpp): at `packet` every packet is simulated at its own time; its end is
-// an event only where another party can act on it (link.cpp, send_data_packet). At `message` a
+// an event only where another party can act on it (link.cpp, send_data_packet), and a message that
+// nothing can interleave with (the other direction silent, no fault, no deadline) is one run: every
+// packet's time in closed form from one event, handed over to the per-packet steps at its last
+// byte or at the instant anything changes (the other direction starts, a resetch). At `message` a
 // message follows the closed form of LinkTiming -- a handful of events per message instead of
 // several per byte -- which is exact while the other direction is silent. At `automatic` a message
 // starts in closed form only when the other direction is silent, and when the other direction
@@ -96,6 +99,10 @@ class Link : public sc_core::sc_module {
   // Messages that ran in closed form, and those handed over to the packet level mid-way.
   std::int64_t closed_form_messages() const { return closed_form_messages_; }
   std::int64_t handovers() const { return handovers_; }
+  // At `packet`, a message whose packets nothing can interleave with is planned as one run (see
+  // link.cpp, closed_form_allowed); off, every packet is its own step: the reference the runs are
+  // tested against.
+  void plan_packet_runs(bool on) { packet_runs_ = on; }
 
  private:
   // Bytes a DMA engine moved, and how many of them at the latest instant (see dma_bytes).
@@ -255,6 +262,7 @@ class Link : public sc_core::sc_module {
   void reset_output(int d);
   void reset_input(int d);
   bool faulted_ = false;
+  bool packet_runs_ = true;
   int deadline_waits_ = 0;  // OutputOrFail / InputOrFail waiting on this link
 
   LinkConfig config_;

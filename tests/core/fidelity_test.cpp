@@ -60,12 +60,14 @@ struct Exchange {
 };
 
 // P0 sends to P1 while P1, after a delay, sends back: the times each side sees, and the accounting.
+// `packet_runs` false: at `packet`, every packet is its own step (the reference for the runs).
 Values exchange(const Exchange& e, LinkFidelity links,
-                ComputeFidelity compute = ComputeFidelity::automatic) {
+                ComputeFidelity compute = ComputeFidelity::automatic, bool packet_runs = true) {
   network::MachineOptions o = core_test::options(e.mbps, e.protocol);
   o.fidelity.links = links;
   o.fidelity.compute = compute;
   network::Machine m(core_test::chain(1), o);
+  for (const auto& l : m.links()) l.link->plan_packet_runs(packet_runs);
   Values v;
   v.fill(-1);
   auto& forward = m.channel("forward", 0, 1);
@@ -128,30 +130,41 @@ std::string describe(const Exchange& e) {
 //  * With it (compute `fine` against `auto`) too: a byte landing at the very instant a compute
 //    block starts is never charged to that block (t800/link.hpp, DmaCount), whatever order the
 //    kernel runs that instant's processes in -- before that rule a few cases differed by a cycle.
+//  * The packet level's runs (a message planned from one event, handed over to per-packet steps
+//    when the reverse message starts) must give the per-packet steps' results too.
 TEST(Fidelity, AutoEqualsPacketWhenTheOtherDirectionStartsMidMessage) {
-  int handovers = 0, cases = 0;
+  int handovers = 0, runs_handed_over = 0, cases = 0;
   for (double mbps : {20.0, 10.0})
     for (LinkProtocol protocol : {LinkProtocol::overlapped, LinkProtocol::t414})
       for (int receiver_delay : {0, 30})
         for (int reverse_delay = 0; reverse_delay <= 90; reverse_delay += 1) {
           const Exchange e{mbps, protocol, 16, 5, receiver_delay, reverse_delay, 1};
-          auto run = [&](LinkFidelity links, ComputeFidelity compute) {
-            return in_child([&] { return exchange(e, links, compute); });
+          auto run = [&](LinkFidelity links, ComputeFidelity compute, bool packet_runs = true) {
+            return in_child([&] { return exchange(e, links, compute, packet_runs); });
           };
-          const Values packet = run(LinkFidelity::packet, ComputeFidelity::block);
+          const Values packet = run(LinkFidelity::packet, ComputeFidelity::block, false);
           const Values automatic = run(LinkFidelity::automatic, ComputeFidelity::block);
+          const Values packet_runs = run(LinkFidelity::packet, ComputeFidelity::block);
           ASSERT_GE(packet[3], 0) << describe(e) << ": the packet level did not finish";
           expect_same_results(packet, automatic, describe(e));
+          expect_same_results(packet, packet_runs, describe(e) + ", packet runs");
           handovers += int(automatic[14]);
+          runs_handed_over += int(packet_runs[14]);
           ++cases;
 
-          const Values packet_fine = run(LinkFidelity::packet, ComputeFidelity::fine);
+          const Values packet_fine = run(LinkFidelity::packet, ComputeFidelity::fine, false);
           const Values auto_fine = run(LinkFidelity::automatic, ComputeFidelity::automatic);
-          for (int i = 0; i < kCompared; ++i)
+          const Values runs_fine = run(LinkFidelity::packet, ComputeFidelity::fine);
+          for (int i = 0; i < kCompared; ++i) {
             EXPECT_NEAR(packet_fine[i], auto_fine[i], 1e-9) << describe(e) << ", value " << i;
+            EXPECT_NEAR(packet_fine[i], runs_fine[i], 1e-9)
+                << describe(e) << ", packet runs, value " << i;
+          }
         }
-  // Most of these start the reverse message while the forward one is in closed form.
+  // Most of these start the reverse message while the forward one is in closed form; the packet
+  // level plans a run only where the input is armed before the message starts.
   EXPECT_GT(handovers, cases / 2);
+  EXPECT_GT(runs_handed_over, 0) << "no run was planned: the comparison tested none";
 }
 
 TEST(Fidelity, MessageAndAutoEqualPacketOnAOneWayLink) {
@@ -160,8 +173,14 @@ TEST(Fidelity, MessageAndAutoEqualPacketOnAOneWayLink) {
       for (int receiver_delay : {0, 7, 200})
         for (std::int64_t bytes : {1, 2, 3, 100}) {
           Exchange e{mbps, protocol, bytes, 0, receiver_delay, -1, 3};
-          const Values packet = in_child([&] { return exchange(e, LinkFidelity::packet); });
+          const Values packet = in_child(
+              [&] { return exchange(e, LinkFidelity::packet, ComputeFidelity::automatic, false); });
           ASSERT_GE(packet[1], 0) << describe(e);
+          const Values runs = in_child([&] { return exchange(e, LinkFidelity::packet); });
+          expect_same_results(packet, runs, describe(e) + " packet runs");
+          EXPECT_EQ(runs[13], bytes >= 3 ? 3 : 0) << describe(e)
+                                                  << ": every message of 3 bytes or "
+                                                     "more should be one run";
           for (LinkFidelity f : {LinkFidelity::message, LinkFidelity::automatic}) {
             const Values other = in_child([&] { return exchange(e, f); });
             expect_same_results(packet, other, describe(e) + " " + std::string(t800::to_string(f)));
