@@ -576,8 +576,14 @@ const Registration registered_trajectory{
          {"interpolation", T::text, std::string{"linear"},
           "torque table between rows: \"linear\" or \"hold\" (zero-order hold); held beyond its ends", {}, {},
           {"linear", "hold"}},
-         {"kp", T::real_list, std::vector<double>{100.0}, "PD proportional gains, one or six values", {}, {}, {}},
-         {"kd", T::real_list, std::vector<double>{20.0}, "PD derivative gains, one or six values", {}, {}, {}},
+         // The defaults: critically damped at 10 rad/s for the Stanford arm at the scene's start, kp_i =
+         // 100 D_ii and kd_i = 20 D_ii (D from `t800sim dynamics --q 0.1,0.2,0.5,0.3,0.4,0.5`). One gain
+         // for every joint does not suit an arm whose inertias span 0.0003 to 156 kg m^2: kd = 20 on the
+         // wrist's 0.0003 is a rate of 67,000 /s, and 1 ms RK4 steps diverge.
+         {"kp", T::real_list, std::vector<double>{1099.0, 15561.0, 647.0, 22.45, 144.9, 0.03},
+          "PD proportional gains, one or six values (default: 100 D_ii of the Stanford arm at the scene's start)", {}, {}, {}},
+         {"kd", T::real_list, std::vector<double>{219.8, 3112.3, 129.4, 4.491, 28.99, 0.006},
+          "PD derivative gains, one or six values (default: 20 D_ii of the Stanford arm at the scene's start)", {}, {}, {}},
          {"target", T::real_list, std::vector<double>{0.0, 0.0, 0.5, 0.0, 0.0, 0.0}, "PD target q", {}, {}, {}},
          {"q", T::real_list, std::vector<double>{0.1, 0.2, 0.5, 0.3, 0.4, 0.5}, "initial joint positions", {}, {},
           {}},
