@@ -19,7 +19,7 @@ std::string module_name(const std::string& name) {
   return s;
 }
 
-void run_body(Process* p, Process::Body body) {
+void run_body(Process* p, const Process::Body& body) {
   p->set_status("ready");
   p->reschedule();
   p->set_status("running");
@@ -191,7 +191,7 @@ void Machine::start_router(int node, int from, t800::Link& link, int end) {
           if (deadline_us < 0)
             link_out(self, *next->first, next->second, std::move(m));
           else if (!forward_or_fail(self, *next->first, next->second, std::move(m), deadline_us))
-            self.set_status("router dropped a message for " + c.name + " at its deadline");
+            self.set_status_text("router dropped a message for " + c.name + " at its deadline");
         }
       });
   router.set_daemon();
@@ -205,7 +205,7 @@ void Machine::place_memory() {
   constexpr int kUndeclaredFrameWords = 16;  // a process whose code was not declared (U)
   for (int node = 0; node < processors(); ++node) {
     t800::MemoryDemand demand;
-    std::map<std::string, int> frame_words;  // per process: its largest frame
+    std::map<std::string, int> frame_words;         // per process: its largest frame
     std::map<std::string, std::size_t> code_index;  // a PROC's entry in demand.code
     std::map<std::string, int> array_bytes;
     std::vector<const t800::codegen::CodeUnit*> routines;
@@ -223,7 +223,8 @@ void Machine::place_memory() {
       }
       frame_words[d.process] = std::max(frame_words[d.process], frame);
       // Each PROC once, where it was first declared, as long as its longest recording: a recording
-      // holds the paths its run took, the PROC every path (a ray tracer's lines take different ones).
+      // holds the paths its run took, the PROC every path (a ray tracer's lines take different
+      // ones).
       const int bytes = unit.code_bytes + unit.constant_bytes;
       const auto [entry, first] = code_index.emplace(unit.name, demand.code.size());
       if (first)

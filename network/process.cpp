@@ -49,7 +49,7 @@ void Process::reschedule() {
 }
 
 void Process::out(Channel& channel, t800::Message message) {
-  set_status("out on channel " + channel.name);
+  set_status("out on channel", &channel);
   channel.last_writer = this;
   channel_ = &channel;
   outputting_ = true;
@@ -59,7 +59,7 @@ void Process::out(Channel& channel, t800::Message message) {
 }
 
 t800::Message Process::in(Channel& channel) {
-  set_status("in on channel " + channel.name);
+  set_status("in on channel", &channel);
   channel.last_reader = this;
   channel_ = &channel;
   outputting_ = false;
@@ -69,13 +69,14 @@ t800::Message Process::in(Channel& channel) {
   return m;
 }
 
+// A branch's body is referred to, not copied: PAR returns only when every branch has ended.
 void Process::par(const std::vector<Body>& branches) {
   std::vector<Process*> children;
   for (std::size_t i = 0; i < branches.size(); ++i) {
     compute(t800::timing::start_process_cycles(), "startp");
     const Body& body = branches[i];
     children.push_back(&machine_.spawn(node_, name() + "." + std::to_string(i),
-                                       descriptor_.priority, [body](Process& child) {
+                                       descriptor_.priority, [&body](Process& child) {
                                          body(child);
                                          child.compute(t800::timing::end_process_cycles(), "endp");
                                        }));
@@ -95,7 +96,7 @@ void Process::pri_par(const Body& high, const std::vector<Body>& low) {
   auto start = [&](const Body& body, t800::Priority priority, std::size_t i) {
     compute(t800::timing::start_process_cycles(), "startp");
     children.push_back(
-        &machine_.spawn(node_, name() + "." + std::to_string(i), priority, [body](Process& child) {
+        &machine_.spawn(node_, name() + "." + std::to_string(i), priority, [&body](Process& child) {
           body(child);
           child.compute(t800::timing::end_process_cycles(), "endp");
         }));
@@ -147,16 +148,21 @@ void Process::run_instructions(const t800::isa::Sequence& code) {
 }
 
 void Process::stop(const std::string& why) {
-  set_status("stopped by a run-time error: " + why);
+  set_status_text("stopped by a run-time error: " + why);
   deschedule();
   sc_core::sc_event never;
   for (;;) sc_core::wait(never);
 }
 
+std::string Process::status() const {
+  if (!doing_) return status_text_;
+  return about_ ? std::string(doing_) + " " + about_->name : std::string(doing_);
+}
+
 void Process::mark_ended() {
   deschedule();
   ended_ = true;
-  status_ = "ended";
+  set_status("ended");
   ended_event_.notify(sc_core::SC_ZERO_TIME);
 }
 

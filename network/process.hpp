@@ -72,9 +72,19 @@ class Process {
   void communicate(std::int64_t bytes, bool copies);
   void deschedule();
   void reschedule();
-  // What the process is doing, for deadlock reports.
-  void set_status(std::string status) { status_ = std::move(status); }
-  const std::string& status() const { return status_; }
+  // What the process is doing, for deadlock reports: a phrase and, for a communication, its
+  // channel ("in on channel" c reads "in on channel <c's name>"). Kept as pointers: a process
+  // changes status at every communication, and the words are wanted only if it deadlocks.
+  void set_status(const char* doing, const Channel* about = nullptr) {
+    doing_ = doing;
+    about_ = about;
+  }
+  // A status whose words are made at run time (a STOP's reason).
+  void set_status_text(std::string text) {
+    doing_ = nullptr;
+    status_text_ = std::move(text);
+  }
+  std::string status() const;
   // What it waits on, for the cycle of waits in a deadlock report (network/wait_cycle.hpp): the
   // channel of the `in` or `out` it is in (null otherwise), or the PAR branches it waits for.
   const Channel* channel() const { return channel_; }
@@ -91,7 +101,9 @@ class Process {
   Machine& machine_;
   int node_;
   t800::ProcessDescriptor descriptor_;
-  std::string status_ = "not started";
+  const char* doing_ = "not started";
+  const Channel* about_ = nullptr;
+  std::string status_text_;  // when doing_ is null
   bool ended_ = false;
   bool daemon_ = false;
   const Channel* channel_ = nullptr;

@@ -31,7 +31,7 @@ void reset_channel(Process& p) {
 // The process's status and wait, as Process::out and in keep them, for deadlock reports.
 template <class Body>
 auto communicating(Process& p, Channel& c, bool output, Body body) {
-  p.set_status(std::string(output ? "out" : "in") + " (or fail) on channel " + c.name);
+  p.set_status(output ? "out (or fail) on channel" : "in (or fail) on channel", &c);
   (output ? c.last_writer : c.last_reader) = &p;
   auto result = body();
   p.set_status("running");

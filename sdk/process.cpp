@@ -126,10 +126,11 @@ Process::Wire Process::open(const detail::ChannelSlot* slot, bool writing, doubl
   return Wire(impl_, *slot->impl, deadline_us, label);
 }
 
+// The branches are referred to, not copied: PAR returns only when every branch has ended.
 void Process::par(const std::vector<Body>& branches) {
   std::vector<network::Process::Body> bodies;
   for (const Body& b : branches)
-    bodies.emplace_back([b](network::Process& child) {
+    bodies.emplace_back([&b](network::Process& child) {
       Process p(child);
       b(p);
     });
@@ -138,13 +139,13 @@ void Process::par(const std::vector<Body>& branches) {
 
 void Process::par_for(int n, const IndexedBody& body) {
   std::vector<Body> branches;
-  for (int i = 0; i < n; ++i) branches.emplace_back([body, i](Process& p) { body(p, i); });
+  for (int i = 0; i < n; ++i) branches.emplace_back([&body, i](Process& p) { body(p, i); });
   par(branches);
 }
 
 void Process::pri_par(const Body& high, const std::vector<Body>& low) {
   auto wrap = [](const Body& b) {
-    return network::Process::Body([b](network::Process& child) {
+    return network::Process::Body([&b](network::Process& child) {
       Process p(child);
       b(p);
     });

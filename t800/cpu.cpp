@@ -123,9 +123,9 @@ std::int64_t Cpu::dma_late(const sc_time& t0) const {
   return n;
 }
 
-std::int64_t Cpu::dma_bytes(bool including_now) const {
+std::int64_t Cpu::dma_bytes(const sc_time& now, bool including_now) const {
   std::int64_t n = 0;
-  for (const DmaEnd& d : dma_) n += d.link->dma_bytes(d.end, including_now);
+  for (const DmaEnd& d : dma_) n += d.link->dma_bytes(d.end, now, including_now);
   return n;
 }
 
@@ -156,17 +156,17 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
     sc_time limit = slice_limit(p, remaining);
     const sc_time start = sc_time_stamp();
     if (halt_armed_ && halt_at_ > start) limit = std::min(limit, halt_at_ - start);
-    const std::int64_t dma_before = stealing ? dma_bytes(true) : 0;
-    const sc_time block_start = sc_time_stamp();
+    const std::int64_t dma_before = stealing ? dma_bytes(start, true) : 0;
     activity_.set_cpu(kind, label);
     sc_core::wait(limit, p.interrupt);
     activity_.set_cpu(ProcessorState::idle);
     stop_if_halted(p);
-    remaining -= sc_time_stamp() - start;
+    const sc_time end = sc_time_stamp();
+    remaining -= end - start;
     if (stealing) {  // every byte the link engines moved meanwhile took a memory cycle: the work
                      // takes longer
       const std::int64_t stolen =
-          std::max<std::int64_t>(0, dma_bytes(false) - dma_before - dma_late(block_start)) *
+          std::max<std::int64_t>(0, dma_bytes(end, false) - dma_before - dma_late(start)) *
           timing::kLinkDmaCyclesPerByte;
       stats_.stolen_cycles += stolen;
       remaining += cycles(stolen);

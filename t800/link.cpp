@@ -44,6 +44,7 @@ Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, Proces
   // The same sum the packet level makes, in the kernel's time units, so both levels agree to the
   // tick.
   byte_period_ = std::max(data_packet_, detect_delay_ + ack_packet_ + process_delay_);
+  tick_ = sc_core::sc_get_time_resolution();
 
   for (int d = 0; d < 2; ++d) {
     dir_[d].activity.merge_gaps_below(
@@ -126,6 +127,13 @@ bool Link::input_pending(int to) const {
   return d.submitted > d.taken;
 }
 
+// n adds of one byte at strictly increasing times, the last at `last`, all but the last before the
+// current instant: the earlier ones change only the total (the last sets the latest instant).
+void Link::DmaCount::add_increasing(std::int64_t n, const sc_time& last) {
+  total += n - 1;
+  add(1, last);
+}
+
 void Link::DmaCount::add(std::int64_t n, const sc_time& at, bool counted_first) {
   if (!counted_first && queried && at == query_at && at == sc_time_stamp()) late += n;
   total += n;
@@ -137,10 +145,9 @@ void Link::DmaCount::add(std::int64_t n, const sc_time& at, bool counted_first) 
   }
 }
 
-std::int64_t Link::dma_bytes(int e, bool including_now) const {
+std::int64_t Link::dma_bytes(int e, const sc_time& now, bool including_now) const {
   const Direction& out = dir_[e];     // its data leaves through end e
   const Direction& in = dir_[1 - e];  // its data arrives at end e
-  const sc_time now = sc_time_stamp();
   if (including_now) {
     out.dma_sent.query(now);
     in.dma_received.query(now);
@@ -150,7 +157,7 @@ std::int64_t Link::dma_bytes(int e, bool including_now) const {
   if (now == SC_ZERO_TIME && !including_now) return n;
   // Closed forms and a settled packet's byte: the bytes started (sent) or arrived (received) by
   // now, or strictly before now.
-  const sc_time until = including_now ? now : now - sc_core::sc_get_time_resolution();
+  const sc_time until = including_now ? now : now - tick_;
   if (in.arrival_pending && in.arrival_at <= until) ++n;
   if (out.closed_form.active && !out.closed_form.sender_done)
     n += bytes_started_by(out.closed_form, out.closed_form.bytes, until);
@@ -260,8 +267,7 @@ bool Link::send_data_packet(int di) {
   settle_arrival(di);
   if (d.sent == 0) {  // the first byte of a message: both ends are now communicating
     d.receiving = true;
-    d.incoming =
-        d.queue.front();  // the receiver's copy: the sender may finish before the last byte lands
+    begin_incoming(di);
     d.received = 0;
     if (end(di)) end(di)->transfer_begin();
     if (d.armed) count_receiver(di);
@@ -352,6 +358,7 @@ void Link::finish_ack_packet(int w, const sc_time& start) {
   if (d.acked ==
       d.queue.front().bytes) {  // the whole message is acknowledged: the sender may go on
     d.activity.message_done(d.acked, d.queue.front().label);
+    take_payload(acked_direction);
     d.queue.pop_front();
     d.sent = d.acked = 0;
     ++d.completed;
@@ -415,8 +422,29 @@ void Link::on_byte_arrived(int di) {
   if (d.armed && d.received == d.incoming.bytes) complete_receive(di);
 }
 
+// The receiver's copy of the message now starting: its length and label. Its payload stays in the
+// sender's queue -- copying it would cost an allocation or two per message -- until the sender is
+// done with the message or the receiver has it, whichever comes first (take_payload).
+void Link::begin_incoming(int di) {
+  Direction& d = dir_[di];
+  const Message& m = d.queue.front();
+  d.incoming.bytes = m.bytes;
+  d.incoming.label = m.label;
+  d.incoming.payload.reset();
+  d.payload_with_sender = true;
+}
+
+// Called before the sender's message leaves its queue, and when the receiver takes it.
+void Link::take_payload(int di) {
+  Direction& d = dir_[di];
+  if (!d.payload_with_sender) return;
+  d.incoming.payload = std::move(d.queue.front().payload);
+  d.payload_with_sender = false;
+}
+
 void Link::complete_receive(int di) {
   Direction& d = dir_[di];
+  take_payload(di);
   Message m = std::move(d.incoming);
   d.receiving = false;
   d.armed = false;
@@ -482,7 +510,7 @@ void Link::start_closed_form(int di) {
   cf.armed_at = cf.start;
   cf.sender_done = cf.delivered = false;
   d.receiving = true;
-  d.incoming = d.queue.front();
+  begin_incoming(di);
   d.received = 0;
   ++closed_form_messages_;
   if (end(di)) end(di)->transfer_begin();
@@ -558,6 +586,7 @@ void Link::closed_form_sender_done(int di) {
   record_closed_form_packets(di, bytes, bytes);
   d.dma_sent.add(bytes, d.closed_form.start);
   d.activity.message_done(bytes, d.queue.front().label);
+  take_payload(di);
   d.queue.pop_front();
   d.sent = d.acked = 0;
   ++d.completed;
@@ -584,6 +613,26 @@ void Link::record_closed_form_packets(int di, std::int64_t data_packets, std::in
       acks.packet(ack_start(cf, k), ack_packet_, false);
 }
 
+// Bytes 1..n of the closed form whose data packet, acknowledge and acknowledge processing have all
+// ended by `now`: the whole of hand_over's walk for each (see there).
+std::int64_t Link::bytes_done_by(const ClosedForm& cf, const sc_time& now) const {
+  if (!cf.armed) return 0;  // the first acknowledge is still owed
+  auto done = [&](std::int64_t k) {
+    const sc_time s = byte_start(cf, k);
+    return s + data_packet_ <= now && s + detect_delay_ <= now &&
+           ack_start(cf, k) + ack_packet_ + process_delay_ <= now;
+  };
+  std::int64_t lo = 0, hi = cf.bytes;  // done(lo) (0: trivially); the answer is in [lo, hi]
+  while (lo < hi) {
+    const std::int64_t mid = lo + (hi - lo + 1) / 2;
+    if (done(mid))
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  return lo;
+}
+
 // The other direction has started: the state the packet level would be in now, worked out from the
 // closed form, byte by byte. Events still to come (a detect, an acknowledge's processing, packets
 // on the wires) are scheduled at their times, so the packet level carries on exactly.
@@ -597,9 +646,16 @@ void Link::hand_over(int di) {
   const sc_time now = sc_time_stamp();
   const std::int64_t bytes = cf.bytes;
   const bool sender_side = !cf.sender_done;  // else the acknowledges are all in and recorded
-  std::int64_t sent = 0, acked = 0, received = 0, recorded_data = 0, recorded_acks = 0;
-  bool may_send = false;
-  for (std::int64_t k = 1; k <= bytes; ++k) {
+  // Bytes whose packets, acknowledges and processing are all over by now leave nothing pending;
+  // they form a prefix (every one of those times grows with k), found by bisection, so a long
+  // message is handed over in O(log bytes), not byte by byte.
+  const std::int64_t done = bytes_done_by(cf, now);
+  std::int64_t sent = done, acked = done, received = done, recorded_data = done,
+               recorded_acks = done;
+  bool may_send = done > 0;
+  if (done > 0 && !cf.delivered)
+    d.dma_received.add_increasing(done, byte_start(cf, done) + data_packet_);
+  for (std::int64_t k = done + 1; k <= bytes; ++k) {
     if (k >= 2 && !cf.armed) break;  // the sender waits for the first acknowledge
     const sc_time s = byte_start(cf, k);
     if (s >= now) {
@@ -725,7 +781,8 @@ void Link::apply_byte_fault(int di) {
     if (f.hit) f.hit(what + " lost");
     return;
   }
-  const bool changed = flip_payload_byte(d.incoming.payload, d.sent - 1, f.mask);
+  std::any& payload = d.payload_with_sender ? d.queue.front().payload : d.incoming.payload;
+  const bool changed = flip_payload_byte(payload, d.sent - 1, f.mask);
   if (f.hit) f.hit(what + (changed ? " changed" : " changed (its value is not modelled)"));
 }
 
@@ -773,6 +830,7 @@ void Link::reset_output(int di) {
   if (d.closed_form.active) hand_over(di);
   if (d.queue.empty()) return;
   const bool started = d.sent > 0 || d.receiving;
+  d.payload_with_sender = false;  // abandoned with the message
   d.queue.pop_front();
   ++d.completed;
   ++d.taken;  // no input will take it

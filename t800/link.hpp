@@ -93,7 +93,8 @@ class Link : public sc_core::sc_module {
   // a compute block with the bytes moved after its start (a byte whose arrival woke the process was
   // written before it ran) and strictly before its end (the kernel may not have run that instant's
   // packet events yet).
-  std::int64_t dma_bytes(int e, bool including_now) const;
+  // `now` is the current simulated time (the caller's: a CPU asks for each of its links at once).
+  std::int64_t dma_bytes(int e, const sc_core::sc_time& now, bool including_now) const;
   // Bytes counted at instant t0 after the last dma_bytes(e, true) at t0 (see DmaCount).
   std::int64_t dma_late(int e, const sc_core::sc_time& t0) const;
   // Messages that ran in closed form, and those handed over to the packet level mid-way.
@@ -128,6 +129,7 @@ class Link : public sc_core::sc_module {
     }
     // `counted_first`: as if counted at the start of instant `at`, before any query then.
     void add(std::int64_t n, const sc_core::sc_time& at, bool counted_first = false);
+    void add_increasing(std::int64_t n, const sc_core::sc_time& last);
     std::int64_t before(const sc_core::sc_time& now) const {
       return total - (latest_at == now ? latest : 0);
     }
@@ -191,6 +193,7 @@ class Link : public sc_core::sc_module {
     bool receiving = false;
     bool receiver_counted = false;
     Message incoming;
+    bool payload_with_sender = false;  // incoming's payload is still the queue front's
     std::int64_t received = 0;
     std::list<Message> delivered;
     sc_core::sc_event delivered_event;
@@ -238,6 +241,7 @@ class Link : public sc_core::sc_module {
   void on_closed_form(int d);
   void closed_form_sender_done(int d);
   void hand_over(int d);
+  std::int64_t bytes_done_by(const ClosedForm& cf, const sc_core::sc_time& now) const;
   sc_core::sc_time byte_start(const ClosedForm& cf, std::int64_t k) const;  // k >= 1
   sc_core::sc_time ack_start(const ClosedForm& cf, std::int64_t k) const;   // needs cf.armed
   sc_core::sc_time sender_done_time(int d) const;
@@ -249,6 +253,8 @@ class Link : public sc_core::sc_module {
   void on_ack_processed(int d);
   void on_byte_arrived(int d);
   void queue_ack(int d);
+  void begin_incoming(int d);
+  void take_payload(int d);
   void complete_receive(int d);
   void count_receiver(int d);
   ProcessorActivity* end(int e) { return end_[e]; }
@@ -268,6 +274,7 @@ class Link : public sc_core::sc_module {
   LinkConfig config_;
   LinkFidelity fidelity_;
   sc_core::sc_time bit_, data_packet_, ack_packet_, detect_delay_, process_delay_, byte_period_;
+  sc_core::sc_time tick_;  // the kernel's time resolution
   std::int64_t closed_form_messages_ = 0, handovers_ = 0;
   ProcessorActivity* end_[2];
   Direction dir_[2]{Direction(0), Direction(1)};

@@ -66,9 +66,8 @@ class PieceCode {
       work = tally.work();
       return r;
     }();
-    const std::string key = std::string(label) + "|" + elimination::to_string(work);
-    auto found = recorded_.find(key);
-    if (found == recorded_.end()) {
+    std::shared_ptr<const t800::codegen::Recording>& code = recording_of(label, work);
+    if (!code) {
       auto recording = std::make_shared<t800::codegen::Recording>(label, sizeof(T) == 8);
       {
         const t800::codegen::RecordingScope scope(*recording);
@@ -81,14 +80,27 @@ class PieceCode {
             },
             copies);
       }
-      found = recorded_.emplace(key, std::move(recording)).first;
+      code = std::move(recording);
     }
-    return std::make_pair(std::move(result),
-                          t800::ComputeWork{to_operation_mix(work), found->second});
+    return std::make_pair(std::move(result), t800::ComputeWork{to_operation_mix(work), code});
   }
 
  private:
-  std::map<std::string, std::shared_ptr<const t800::codegen::Recording>> recorded_;
+  using Recorded =
+      std::vector<std::pair<elimination::Work, std::shared_ptr<const t800::codegen::Recording>>>;
+
+  // The recording kept for a kind of piece and its work (null until made). A piece kind meets a
+  // handful of works (its pivot paths), so a list per kind is searched; no key is formatted.
+  std::shared_ptr<const t800::codegen::Recording>& recording_of(const char* label,
+                                                                const elimination::Work& work) {
+    auto kind = recorded_.find(label);
+    if (kind == recorded_.end()) kind = recorded_.emplace(label, Recorded{}).first;
+    for (auto& [w, recording] : kind->second)
+      if (w == work) return recording;
+    return kind->second.emplace_back(work, nullptr).second;
+  }
+
+  std::map<std::string, Recorded, std::less<>> recorded_;
 };
 
 }  // namespace workloads
