@@ -8,6 +8,7 @@
 namespace t800 {
 
 namespace {
+const std::string kNoLabel;
 double now_us() {
   return sc_core::sc_time_stamp().to_seconds() * 1e6;
 }
@@ -31,9 +32,9 @@ ProcessorState ProcessorActivity::state() const {
   return ProcessorState::idle;
 }
 
-void ProcessorActivity::settle(double t) {
+// `next_label`: the CPU's label while it works (an interval is split where it changes), else empty.
+void ProcessorActivity::settle(double t, const std::string& next_label) {
   const ProcessorState next = state();
-  const std::string& next_label = cpu_ == ProcessorState::idle ? std::string() : label_;
   if (next == current_ && next_label == current_label_) return;
   const double elapsed = t - since_us_;
   if (current_ != ProcessorState::idle) {
@@ -54,24 +55,28 @@ double ProcessorActivity::busy_us_now() const {
 
 void ProcessorActivity::set_cpu(ProcessorState cpu, const std::string& label) {
   cpu_ = cpu;
-  label_ = label;
-  settle(now_us());
+  settle(now_us(), cpu == ProcessorState::idle ? kNoLabel : label);
+}
+
+// While the CPU works the current interval is its own, so its label is the CPU's.
+const std::string& ProcessorActivity::cpu_label() const {
+  return cpu_ == ProcessorState::idle ? kNoLabel : current_label_;
 }
 
 void ProcessorActivity::transfer_begin() {
   ++transfers_;
-  settle(now_us());
+  settle(now_us(), cpu_label());
 }
 
 void ProcessorActivity::transfer_end() {
   --transfers_;
-  settle(now_us());
+  settle(now_us(), cpu_label());
 }
 
 void ProcessorActivity::close(const sc_core::sc_time& end) {
   cpu_ = ProcessorState::idle;
   transfers_ = 0;
-  settle(end.to_seconds() * 1e6);
+  settle(end.to_seconds() * 1e6, kNoLabel);
 }
 
 void ProcessorActivity::credit(double compute_us, double communicate_us, double first_busy_us,

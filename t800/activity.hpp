@@ -52,9 +52,9 @@ class ProcessorActivity {
 
  private:
   ProcessorState state() const;
-  void settle(double now_us);
+  void settle(double now_us, const std::string& next_label);
+  const std::string& cpu_label() const;
   ProcessorState cpu_ = ProcessorState::idle;
-  std::string label_;
   int transfers_ = 0;
   ProcessorState current_ = ProcessorState::idle;
   std::string current_label_;
