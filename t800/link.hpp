@@ -24,9 +24,9 @@
 
 #include <cstdint>
 #include <functional>
-#include <list>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <systemc>
 
@@ -154,9 +154,23 @@ class Link : public sc_core::sc_module {
     sc_core::sc_time start;
   };
 
-  // Message queues are lists: an empty std::deque already holds a 512-byte block, and a
-  // 1024-transputer network has thousands of link directions, almost all of them idle (issue 12:
-  // host memory per transputer).
+  // A FIFO of messages in a vector, which keeps its storage: a busy direction allocates nothing
+  // per message (a list allocates a node each) and an idle one holds nothing (an empty std::deque
+  // already holds a 512-byte block, and a 1024-transputer network has thousands of link
+  // directions, almost all of them idle). A queue holds a message or two, so popping the front
+  // moves little.
+  class MessageQueue {
+   public:
+    bool empty() const { return items_.empty(); }
+    Message& front() { return items_.front(); }
+    const Message& front() const { return items_.front(); }
+    void push_back(Message m) { items_.push_back(std::move(m)); }
+    void pop_front() { items_.erase(items_.begin()); }
+
+   private:
+    std::vector<Message> items_;
+  };
+
   struct ByteFault {
     bool armed = false, corrupt = false;
     std::uint8_t mask = 0;
@@ -180,7 +194,7 @@ class Link : public sc_core::sc_module {
   struct Direction {
     explicit Direction(int d);
     // sending DMA
-    std::list<Message> queue;
+    MessageQueue queue;
     std::int64_t sent = 0, acked = 0;
     bool may_send = true;
     std::int64_t submitted = 0, completed = 0;  // message sequence numbers
@@ -195,7 +209,7 @@ class Link : public sc_core::sc_module {
     Message incoming;
     bool payload_with_sender = false;  // incoming's payload is still the queue front's
     std::int64_t received = 0;
-    std::list<Message> delivered;
+    MessageQueue delivered;
     sc_core::sc_event delivered_event;
     // wire of this direction's data, and its pending acknowledges for the other direction
     int acks_pending = 0;

@@ -110,6 +110,7 @@ struct Messages {
   using PacketValue = t800sim::value_of<Packet>;
   static PacketValue packet(std::int32_t header, const Row& row) {
     std::vector<T> values;
+    values.reserve(row.size());
     for (const C& v : row) values.push_back(v.value());
     return {header, std::move(values)};
   }
@@ -121,11 +122,13 @@ struct Messages {
   // word alone.
   static PacketValue to_packet(int step, const Pivot& pivot) {
     if (!pivot.ok) return {header::kStop | (pivot.finish ? header::kFinish : 0), {}};
-    Row values = pivot.row;
-    if (pivot.with_scale) values.push_back(pivot.scale);
-    return packet(
-        step | (pivot.unstable ? header::kUnstable : 0) | (pivot.with_scale ? header::kScale : 0),
-        values);
+    const std::int32_t word = step | (pivot.unstable ? header::kUnstable : 0);
+    if (!pivot.with_scale) return packet(word, pivot.row);
+    Row values;
+    values.reserve(pivot.row.size() + 1);
+    values.insert(values.end(), pivot.row.begin(), pivot.row.end());
+    values.push_back(pivot.scale);
+    return packet(word | header::kScale, values);
   }
   static Pivot pivot_of(const PacketValue& packet) {
     const std::int32_t flags = std::get<0>(packet);
