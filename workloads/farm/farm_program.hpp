@@ -17,6 +17,7 @@
 #include "network/machine.hpp"
 #include "t800sim/farm.hpp"
 #include "workloads/dynamics/assembly.hpp"
+#include "workloads/dynamics/replay.hpp"
 #include "workloads/dynamics/subtask_set.hpp"
 #include "workloads/farm/farm_tasks.hpp"
 
@@ -71,7 +72,7 @@ class FarmProgram {
   const std::vector<int>& workers() const { return workers_; }
   // The subtasks each worker ran in the last round (indices into work().tasks).
   const std::vector<std::vector<int>>& done_by() const { return farm_->done_by(); }
-  std::vector<dynamics::Subtask> subtasks() const;
+  const std::vector<dynamics::Subtask>& subtasks() const { return subtasks_; }
 
  private:
   // The shared input: the worker input's REALs in message order (dynamics::message_fields), one
@@ -85,6 +86,9 @@ class FarmProgram {
   int master_;
   std::vector<int> workers_;
   FarmWork work_;
+  std::vector<dynamics::Subtask> subtasks_;  // work_.tasks' subtasks, in order (assemble's input)
+  // Each subtask's kernel, traced for the host (dynamics/replay.hpp): what run_subtask evaluates.
+  std::vector<dynamics::SubtaskReplay<S>> replays_;
   std::unique_ptr<t800sim::Builder> builder_;  // owns the channels the skeleton's handles name
   std::unique_ptr<Skeleton> farm_;
 };
