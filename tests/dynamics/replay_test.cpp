@@ -13,6 +13,7 @@
 #include "dynamics_fixtures.hpp"
 #include "workloads/dynamics/evaluate.hpp"
 #include "workloads/dynamics/replay.hpp"
+#include "workloads/dynamics/subtask_set.hpp"
 
 namespace dynamics {
 namespace {
@@ -66,17 +67,26 @@ std::vector<std::vector<T>> messages(const RobotModel& model) {
   return all;
 }
 
+// All the terms replayed together (sharing what their kernels compute alike), and one alone.
 template <class T>
 void expect_kernel_bits(const RobotModel& model, const std::string& name) {
   const std::vector<std::vector<T>> inputs = messages<T>(model);
-  for (const Subtask& task : all_terms()) {
-    const SubtaskReplay<T> replay(model, task);
-    for (const std::vector<T>& message : inputs) {
-      const T kernel = evaluate_subtask(model, task, input_of(model, message));
-      const T replayed = replay(message);
-      EXPECT_TRUE(same_value(kernel, replayed))
-          << name << " " << task.name << ": " << kernel << " vs " << replayed;
+  const std::vector<Subtask> tasks = all_terms();
+  const SubtaskReplay<T> together(model, tasks);
+  for (const std::vector<T>& message : inputs) {
+    const std::vector<T>& replayed = together(message);
+    ASSERT_EQ(replayed.size(), tasks.size());
+    for (std::size_t t = 0; t < tasks.size(); ++t) {
+      const T kernel = evaluate_subtask(model, tasks[t], input_of(model, message));
+      EXPECT_TRUE(same_value(kernel, replayed[t]))
+          << name << " " << tasks[t].name << ": " << kernel << " vs " << replayed[t];
     }
+  }
+  const Subtask& last = tasks.back();
+  const SubtaskReplay<T> alone(model, {last});
+  for (const std::vector<T>& message : inputs) {
+    const T kernel = evaluate_subtask(model, last, input_of(model, message));
+    EXPECT_TRUE(same_value(kernel, alone(message).front())) << name << " " << last.name;
   }
 }
 
@@ -111,11 +121,30 @@ TEST(SubtaskReplay, ModifiedArmsAgree) {
 // A term the model's constants make zero is a constant: nothing is replayed.
 TEST(SubtaskReplay, StructuralZeroTermsAreConstants) {
   const RobotModel& model = testing::stanford();
+  const WorkerInput<float> input = make_worker_input<float>(model, mid_configuration(model));
   for (const Subtask& task : all_terms()) {
-    const SubtaskReplay<float> replay(model, task);
-    const WorkerInput<float> input = make_worker_input<float>(model, mid_configuration(model));
-    if (evaluate_term(model, task, input).is_zero()) {
-      EXPECT_EQ(replay.operations(), 0u) << task.name;
+    if (!evaluate_term(model, task, input).is_zero()) continue;
+    const SubtaskReplay<float> replay(model, {task});
+    EXPECT_EQ(replay.operations(), 0u) << task.name;
+    EXPECT_TRUE(same_value(replay(message_of(model, input)).front(), 0.0f)) << task.name;
+  }
+}
+
+// The values are kept for one message only: another message, even one differing from it only in a
+// zero's sign, is replayed.
+TEST(SubtaskReplay, AnotherMessageIsReplayedAgain) {
+  const RobotModel& model = testing::stanford();
+  const std::vector<Subtask> tasks = derive_subtasks(model, ModelVariant::full);
+  const SubtaskReplay<float> replay(model, tasks);
+  std::vector<float> first = messages<float>(model).front(), second = first, third = first;
+  first[1] = 0.0f;
+  second[1] = -0.0f;
+  third[1] = 0.5f;
+  for (const std::vector<float>* message : {&first, &third, &first, &second, &third, &second}) {
+    const std::vector<float> values = replay(*message);
+    for (std::size_t t = 0; t < tasks.size(); ++t) {
+      const float kernel = evaluate_subtask(model, tasks[t], input_of(model, *message));
+      EXPECT_TRUE(same_value(kernel, values[t])) << tasks[t].name;
     }
   }
 }

@@ -87,12 +87,11 @@ void FarmProgram<S>::build(network::Machine& m, const std::string& master_proces
   work_ = farm_work(model_, settings_.variant, m.compute_model(workers_.front()), sizeof(S) == 8);
   std::vector<t800sim::FarmTask> tasks;
   subtasks_.clear();
-  replays_.clear();
   for (const FarmTask& t : work_.tasks) {
     tasks.push_back({t.subtask.name, t800sim::Kernel(t.work.code, t.ops, 0)});
     subtasks_.push_back(t.subtask);
-    if (!settings_.skip_numerics) replays_.emplace_back(model_, t.subtask);
   }
+  if (!settings_.skip_numerics) replay_ = dynamics::SubtaskReplay<S>(model_, subtasks_);
   farm_ = std::make_unique<Skeleton>(
       std::move(tasks),
       [this](int task, const std::vector<S>& shared) { return run_subtask(task, shared); },
@@ -114,8 +113,9 @@ void FarmProgram<S>::build(network::Machine& m, const std::string& master_proces
 template <class S>
 S FarmProgram<S>::run_subtask(int task, const std::vector<S>& shared) const {
   if (settings_.skip_numerics) return S(0);
-  // evaluate_subtask<S> on the message (shared holds its fields in order), to the bit.
-  const S value = replays_[std::size_t(task)](shared);
+  // evaluate_subtask<S> on the message (shared holds its fields in order), to the bit; the first
+  // worker to get a round's message has every subtask's value replayed.
+  const S value = replay_(shared)[std::size_t(task)];
   if (!std::isnan(value)) return value;
   // A NaN (from a corrupted message) is NaN either way, but its sign and payload depend on how the
   // compiler ordered the kernel's commutative operands: the kernel itself gives it.

@@ -87,8 +87,8 @@ class FarmProgram {
   std::vector<int> workers_;
   FarmWork work_;
   std::vector<dynamics::Subtask> subtasks_;  // work_.tasks' subtasks, in order (assemble's input)
-  // Each subtask's kernel, traced for the host (dynamics/replay.hpp): what run_subtask evaluates.
-  std::vector<dynamics::SubtaskReplay<S>> replays_;
+  // The subtasks' kernels, traced for the host (dynamics/replay.hpp): what run_subtask evaluates.
+  dynamics::SubtaskReplay<S> replay_;
   std::unique_ptr<t800sim::Builder> builder_;  // owns the channels the skeleton's handles name
   std::unique_ptr<Skeleton> farm_;
 };
