@@ -11,6 +11,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,7 @@ class FarmProgram {
   using Skeleton = t800sim::Farm<t800sim::Block<S>, S>;
   t800sim::FarmOptions options() const;
   S run_subtask(int task, const std::vector<S>& shared) const;
+  S kernel_value(int task, const std::vector<S>& shared) const;  // evaluate_subtask<S> itself
 
   const dynamics::RobotModel& model_;
   FarmSettings settings_;
@@ -87,8 +89,10 @@ class FarmProgram {
   std::vector<int> workers_;
   FarmWork work_;
   std::vector<dynamics::Subtask> subtasks_;  // work_.tasks' subtasks, in order (assemble's input)
-  // The subtasks' kernels, traced for the host (dynamics/replay.hpp): what run_subtask evaluates.
-  dynamics::SubtaskReplay<S> replay_;
+  // The subtasks' kernels traced for the host (dynamics/replay.hpp), from the second evaluation on:
+  // what run_subtask evaluates then.
+  std::optional<dynamics::SubtaskReplay<S>> replay_;
+  int rounds_ = 0;                             // evaluations so far
   std::unique_ptr<t800sim::Builder> builder_;  // owns the channels the skeleton's handles name
   std::unique_ptr<Skeleton> farm_;
 };
