@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
-#include <stdexcept>
 #include <tuple>
 
 #include "workloads/dynamics/evaluate.hpp"
