@@ -11,12 +11,14 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "network/machine.hpp"
 #include "t800sim/farm.hpp"
 #include "workloads/dynamics/assembly.hpp"
+#include "workloads/dynamics/replay.hpp"
 #include "workloads/dynamics/subtask_set.hpp"
 #include "workloads/farm/farm_tasks.hpp"
 
@@ -71,7 +73,7 @@ class FarmProgram {
   const std::vector<int>& workers() const { return workers_; }
   // The subtasks each worker ran in the last round (indices into work().tasks).
   const std::vector<std::vector<int>>& done_by() const { return farm_->done_by(); }
-  std::vector<dynamics::Subtask> subtasks() const;
+  const std::vector<dynamics::Subtask>& subtasks() const { return subtasks_; }
 
  private:
   // The shared input: the worker input's REALs in message order (dynamics::message_fields), one
@@ -79,12 +81,18 @@ class FarmProgram {
   using Skeleton = t800sim::Farm<t800sim::Block<S>, S>;
   t800sim::FarmOptions options() const;
   S run_subtask(int task, const std::vector<S>& shared) const;
+  S kernel_value(int task, const std::vector<S>& shared) const;  // evaluate_subtask<S> itself
 
   const dynamics::RobotModel& model_;
   FarmSettings settings_;
   int master_;
   std::vector<int> workers_;
   FarmWork work_;
+  std::vector<dynamics::Subtask> subtasks_;  // work_.tasks' subtasks, in order (assemble's input)
+  // The subtasks' kernels traced for the host (dynamics/replay.hpp), from the second evaluation on:
+  // what run_subtask evaluates then.
+  std::optional<dynamics::SubtaskReplay<S>> replay_;
+  int rounds_ = 0;                             // evaluations so far
   std::unique_ptr<t800sim::Builder> builder_;  // owns the channels the skeleton's handles name
   std::unique_ptr<Skeleton> farm_;
 };
