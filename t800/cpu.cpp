@@ -117,15 +117,17 @@ sc_time Cpu::slice_limit(const ProcessDescriptor& p, sc_time limit) {
   return limit;
 }
 
-std::int64_t Cpu::dma_late(const sc_time& t0) const {
+// The bytes the link engines have moved by a block's start t0 (counting those at t0), and by its
+// end (strictly before it, less those counted at t0 after the start was read).
+std::int64_t Cpu::dma_at_start(const sc_time& t0) const {
   std::int64_t n = 0;
-  for (const DmaEnd& d : dma_) n += d.link->dma_late(d.end, t0);
+  for (const DmaEnd& d : dma_) n += d.link->dma_bytes(d.end, t0, true);
   return n;
 }
 
-std::int64_t Cpu::dma_bytes(const sc_time& now, bool including_now) const {
+std::int64_t Cpu::dma_at_end(const sc_time& now, const sc_time& t0) const {
   std::int64_t n = 0;
-  for (const DmaEnd& d : dma_) n += d.link->dma_bytes(d.end, now, including_now);
+  for (const DmaEnd& d : dma_) n += d.link->dma_before_less_late(d.end, now, t0);
   return n;
 }
 
@@ -156,7 +158,7 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
     sc_time limit = slice_limit(p, remaining);
     const sc_time start = sc_time_stamp();
     if (halt_armed_ && halt_at_ > start) limit = std::min(limit, halt_at_ - start);
-    const std::int64_t dma_before = stealing ? dma_bytes(start, true) : 0;
+    const std::int64_t dma_before = stealing ? dma_at_start(start) : 0;
     activity_.set_cpu(kind, label);
     sc_core::wait(limit, p.interrupt);
     activity_.set_cpu(ProcessorState::idle);
@@ -165,9 +167,8 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
     remaining -= end - start;
     if (stealing) {  // every byte the link engines moved meanwhile took a memory cycle: the work
                      // takes longer
-      const std::int64_t stolen =
-          std::max<std::int64_t>(0, dma_bytes(end, false) - dma_before - dma_late(start)) *
-          timing::kLinkDmaCyclesPerByte;
+      const std::int64_t stolen = std::max<std::int64_t>(0, dma_at_end(end, start) - dma_before) *
+                                  timing::kLinkDmaCyclesPerByte;
       stats_.stolen_cycles += stolen;
       remaining += cycles(stolen);
     }

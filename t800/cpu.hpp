@@ -83,8 +83,8 @@ class Cpu {
   bool must_yield(const ProcessDescriptor& p) const;
   bool timesliced() const { return fidelity_ != ComputeFidelity::block; }
   sc_core::sc_time slice_limit(const ProcessDescriptor& p, sc_core::sc_time limit);
-  std::int64_t dma_bytes(const sc_core::sc_time& now, bool including_now) const;
-  std::int64_t dma_late(const sc_core::sc_time& t0) const;
+  std::int64_t dma_at_start(const sc_core::sc_time& t0) const;
+  std::int64_t dma_at_end(const sc_core::sc_time& now, const sc_core::sc_time& t0) const;
   void stop_if_halted(ProcessDescriptor& p);
 
   sc_core::sc_time cycle_;

@@ -166,8 +166,9 @@ std::int64_t Link::dma_bytes(int e, const sc_time& now, bool including_now) cons
   return n;
 }
 
-std::int64_t Link::dma_late(int e, const sc_time& t0) const {
-  return dir_[e].dma_sent.late_at(t0) + dir_[1 - e].dma_received.late_at(t0);
+std::int64_t Link::dma_before_less_late(int e, const sc_time& now, const sc_time& t0) const {
+  return dma_bytes(e, now, false) - dir_[e].dma_sent.late_at(t0) -
+         dir_[1 - e].dma_received.late_at(t0);
 }
 
 // ---- packet level ----

@@ -95,8 +95,10 @@ class Link : public sc_core::sc_module {
   // packet events yet).
   // `now` is the current simulated time (the caller's: a CPU asks for each of its links at once).
   std::int64_t dma_bytes(int e, const sc_core::sc_time& now, bool including_now) const;
-  // Bytes counted at instant t0 after the last dma_bytes(e, true) at t0 (see DmaCount).
-  std::int64_t dma_late(int e, const sc_core::sc_time& t0) const;
+  // dma_bytes(e, now, false) less the bytes counted at instant t0 after the last
+  // dma_bytes(e, t0, true) (see DmaCount): what a block that started at t0 is charged, by now.
+  std::int64_t dma_before_less_late(int e, const sc_core::sc_time& now,
+                                    const sc_core::sc_time& t0) const;
   // Messages that ran in closed form, and those handed over to the packet level mid-way.
   std::int64_t closed_form_messages() const { return closed_form_messages_; }
   std::int64_t handovers() const { return handovers_; }
