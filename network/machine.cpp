@@ -179,10 +179,10 @@ void Machine::start_router(int node, int from, t800::Link& link, int end) {
         for (;;) {
           self.set_status("router waiting");
           t800::Message m = link_in(self, link, end);
-          const RoutedEnvelope& envelope = std::any_cast<const RoutedEnvelope&>(m.payload);
+          RoutedEnvelope& envelope = std::any_cast<RoutedEnvelope&>(m.payload);
           Channel& c = *channels_.at(envelope.channel);
           if (c.to == node) {
-            deliver_to_mailbox(self, c, envelope.inner);
+            deliver_to_mailbox(self, c, std::move(envelope.inner));
             continue;
           }
           auto here = std::find(c.path.begin(), c.path.end(), node);

@@ -7,8 +7,9 @@ namespace t800 {
 
 namespace {
 
-// Below this many additions the loop itself is as cheap as anything cleverer.
-constexpr std::int64_t kShortRun = 4;
+// Below this many additions the loop itself is cheaper than the binade arithmetic (frexp, ldexp, a
+// division): most messages are tens of bytes, each adding its packets' durations here.
+constexpr std::int64_t kShortRun = 64;
 
 // The binade of x > 0: 2^e <= x < 2^(e+1).
 int binade(double x) {

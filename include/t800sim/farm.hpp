@@ -356,6 +356,7 @@ class Farm {
   void static_round(Process& p, std::size_t w, const std::vector<INT>& tasks,
                     const SharedValue& shared) {
     Reply reply;
+    reply.results.reserve(tasks.size());
     for (INT t : tasks) reply.results.push_back(run_task(p, t, shared));
     p.out(from_[w], seal(std::move(reply)));
   }
