@@ -36,8 +36,11 @@ template <class S, class Derived, class VDerived>
 LinearSystem<S> from_eigen(const Eigen::MatrixBase<Derived>& a,
                            const Eigen::MatrixBase<VDerived>& b) {
   LinearSystem<S> out;
+  out.a.reserve(std::size_t(a.rows()));
+  out.b.reserve(std::size_t(a.rows()));
   for (Eigen::Index i = 0; i < a.rows(); ++i) {
     Row<S> r;
+    r.reserve(std::size_t(a.cols()));
     for (Eigen::Index j = 0; j < a.cols(); ++j)
       r.push_back(S(static_cast<dynamics::plain_scalar_t<S>>(a(i, j))));
     out.a.push_back(std::move(r));
@@ -49,14 +52,20 @@ LinearSystem<S> from_eigen(const Eigen::MatrixBase<Derived>& a,
 // D and τ − c − h computed in S (REAL32 dynamics for a REAL32 pipeline, as the farm's master
 // would hand them over).
 template <class S>
+LinearSystem<S> dynamics_system(const dynamics::DynamicsData<S>& data,
+                                const dynamics::JointVector& tau) {
+  const dynamics::JointVectorT<S> rhs = tau.cast<S>() - data.c - data.h;
+  return from_eigen<S>(data.D, rhs);
+}
+
+template <class S>
 LinearSystem<S> dynamics_system(const dynamics::RobotModel& model,
                                 const std::vector<dynamics::Subtask>& subtasks,
                                 const dynamics::JointVector& q, const dynamics::JointVector& qd,
                                 const dynamics::JointVector& tau) {
   dynamics::DynamicsData<S> data;
   dynamics::evaluate_all(model, data, subtasks, q, qd);
-  const dynamics::JointVectorT<S> rhs = tau.cast<S>() - data.c - data.h;
-  return from_eigen<S>(data.D, rhs);
+  return dynamics_system(data, tau);
 }
 
 // A random n x n system: entries uniform in [-1, 1] from the seed (mt19937_64).

@@ -139,16 +139,8 @@ FarmRound FarmProgram<S>::evaluate(t800sim::Process& p, const dynamics::JointVec
   FarmRound round;
   round.start_us = p.now_us();
   p.compute(t800sim::Kernel(work_.master_input), "sin/cos");
-  // The message's size is the model's (worker_input_reals), whatever it holds; skipping, it holds
-  // nothing the workers read.
-  dynamics::WorkerInput<S> input;
-  if (!settings_.skip_numerics) input = dynamics::make_worker_input<S>(model_, q);
-  const std::vector<S*> fields = dynamics::message_fields(model_, input);
-  std::vector<S> shared(fields.size());
-  for (std::size_t i = 0; i < fields.size(); ++i) shared[i] = *fields[i];
-  // Tracing the kernels costs more than a few evaluations (a scene evaluating once runs the kernels
-  // alone): the workers replay them from the second round on.
-  if (!settings_.skip_numerics && ++rounds_ == 2) replay_.emplace(model_, subtasks_);
+  const std::vector<S> shared = message_for(q);
+  count_evaluation();
   data.values = farm_->round(p, shared);
   const t800sim::FarmRoundTiming& timing = farm_->last_round();
   round.farm_start_us = timing.start_us;
@@ -158,6 +150,36 @@ FarmRound FarmProgram<S>::evaluate(t800sim::Process& p, const dynamics::JointVec
   if (!settings_.skip_numerics) dynamics::assemble(subtasks_, qd, data);
   round.end_us = p.now_us();
   return round;
+}
+
+template <class S>
+void FarmProgram<S>::evaluate_on_host(const dynamics::JointVector& q,
+                                      const dynamics::JointVector& qd,
+                                      dynamics::DynamicsData<S>& data) {
+  const std::vector<S> message = message_for(q);
+  count_evaluation();
+  data.values.resize(subtasks_.size());
+  for (std::size_t t = 0; t < subtasks_.size(); ++t) data.values[t] = run_subtask(int(t), message);
+  if (!settings_.skip_numerics) dynamics::assemble(subtasks_, qd, data);
+}
+
+// The master's message: the worker input's REALs in message order. Its size is the model's
+// (worker_input_reals), whatever it holds; skipping, it holds nothing the workers read.
+template <class S>
+std::vector<S> FarmProgram<S>::message_for(const dynamics::JointVector& q) const {
+  dynamics::WorkerInput<S> input;
+  if (!settings_.skip_numerics) input = dynamics::make_worker_input<S>(model_, q);
+  const std::vector<S*> fields = dynamics::message_fields(model_, input);
+  std::vector<S> message(fields.size());
+  for (std::size_t i = 0; i < fields.size(); ++i) message[i] = *fields[i];
+  return message;
+}
+
+// Tracing the kernels costs more than a few evaluations (a scene evaluating once runs the kernels
+// alone): the subtasks are replayed from the second evaluation on.
+template <class S>
+void FarmProgram<S>::count_evaluation() {
+  if (!settings_.skip_numerics && ++rounds_ == 2) replay_.emplace(model_, subtasks_);
 }
 
 template <class S>

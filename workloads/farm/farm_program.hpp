@@ -62,6 +62,11 @@ class FarmProgram {
   // Called from the master's process: one evaluation at (q, qd) into `data`.
   FarmRound evaluate(t800sim::Process& master, const dynamics::JointVector& q,
                      const dynamics::JointVector& qd, dynamics::DynamicsData<S>& data);
+  // What evaluate() gives, computed on the host without simulating the round (a trajectory's
+  // sequential numerics): the same message, each subtask's value as the workers compute it, the
+  // same assembly; bit-identical to a round's.
+  void evaluate_on_host(const dynamics::JointVector& q, const dynamics::JointVector& qd,
+                        dynamics::DynamicsData<S>& data);
   // Called from the master's process after the last evaluation: every worker ends.
   void finish(t800sim::Process& master);
 
@@ -82,6 +87,8 @@ class FarmProgram {
   t800sim::FarmOptions options() const;
   S run_subtask(int task, const std::vector<S>& shared) const;
   S kernel_value(int task, const std::vector<S>& shared) const;  // evaluate_subtask<S> itself
+  std::vector<S> message_for(const dynamics::JointVector& q) const;
+  void count_evaluation();
 
   const dynamics::RobotModel& model_;
   FarmSettings settings_;

@@ -172,7 +172,6 @@ class Trajectory : public Workload {
     m.declare_code(master_, "master", integrator_->work().code);
     m.declare_code(master_, "master", rhs_->work().code);
     progress_ = m.options().progress;
-    subtasks_ = farm_.subtasks();
     skip_numerics_asked_ = m.options().fidelity.skip_numerics;
     reuse_.emplace(m);
     host_ = spawn_host_and_master<S>(m, master_, "initial state", [this](Process& p) { run(p); });
@@ -309,15 +308,19 @@ class Trajectory : public Workload {
     return {};
   }
 
-  Sequential sequential(double t, const integration::State<S>& x) const {
+  // The farm's numbers come from its host-side evaluation (FarmProgram::evaluate_on_host: the
+  // workers' values, bit for bit), the solve from the sequential solver.
+  Sequential sequential(double t, const integration::State<S>& x) {
     Sequential out;
     const double* offsets = integration::stage_offsets(s_.method);
     int stage = 0;
     auto f = [&](const Vec& q, const Vec& qd) {
       const double at = t + offsets[stage++] * s_.dt;
       const JointVector qw = wide(q), qdw = wide(qd);
+      dynamics::DynamicsData<S> data;
+      farm_.evaluate_on_host(qw, qdw, data);
       const elimination::LinearSystem<S> system =
-          elimination::dynamics_system<S>(model_, subtasks_, qw, qdw, torque(at, qw, qdw));
+          elimination::dynamics_system<S>(data, torque(at, qw, qdw));
       const elimination::Solution<S> solution =
           elimination::solve(system.a, system.b, s_.pipeline.rule);
       append_signature(out.signature, solution.status, solution.pivot_rows);
@@ -425,7 +428,6 @@ class Trajectory : public Workload {
   FarmProgram<S> farm_;
   PipelineProgram<S> pipeline_;
   std::optional<t800sim::Kernel> integrator_, rhs_;  // recorded at build()
-  std::vector<dynamics::Subtask> subtasks_;          // the farm's, in its order
   dynamics::DynamicsData<S> data_;
   bool skip_numerics_asked_ = false;
   std::optional<StepReuse> reuse_;          // from the machine's options, at build()
