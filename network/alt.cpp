@@ -97,7 +97,7 @@ void wait_for_a_guard(Process& p, const std::vector<Guard>& guards) {
       if (!g.enabled) continue;
       if (g.kind == Guard::Kind::timer) earliest = std::min(earliest, g.after);
       if (g.kind != Guard::Kind::input) continue;
-      if (g.channel->kind == Channel::Kind::routed) events |= g.channel->mail;
+      if (g.channel->kind == Channel::Kind::routed) events |= g.channel->mail.get();
       if (g.channel->kind == Channel::Kind::direct)
         events |= g.channel->link->input_pending_event(1 - g.channel->writer_end);
     }

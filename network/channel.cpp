@@ -21,7 +21,7 @@ void internal_out(Process& p, Channel& c, t800::Message m) {
     p.communicate(m.bytes, true);
     *c.reader_destination = std::move(m);
     c.waiting_reader = nullptr;
-    c.handed_over.notify(sc_core::SC_ZERO_TIME);
+    c.handed_over.notify_delta();
     return;
   }
   const std::int64_t bytes = m.bytes;
@@ -30,7 +30,7 @@ void internal_out(Process& p, Channel& c, t800::Message m) {
   if (c.alting_reader) c.alting_reader->wake_alt();  // the ALT's guard is ready now
   p.communicate(bytes, false);
   p.deschedule();
-  while (c.waiting_writer == &p) sc_core::wait(c.handed_over);
+  while (c.waiting_writer == &p) sc_core::wait(c.handed_over.get());
   p.reschedule();
 }
 
@@ -39,7 +39,7 @@ t800::Message internal_in(Process& p, Channel& c) {
   if (c.waiting_writer) {
     p.communicate(c.slot.bytes, true);
     c.waiting_writer = nullptr;
-    c.handed_over.notify(sc_core::SC_ZERO_TIME);
+    c.handed_over.notify_delta();
     return std::move(c.slot);
   }
   // The writer copies straight into the reader's variable: the slot may hold the writer's next
@@ -49,7 +49,7 @@ t800::Message internal_in(Process& p, Channel& c) {
   c.reader_destination = &received;
   p.communicate(0, false);  // the reader's length is not known here until the message is (U)
   p.deschedule();
-  while (c.waiting_reader == &p) sc_core::wait(c.handed_over);
+  while (c.waiting_reader == &p) sc_core::wait(c.handed_over.get());
   p.reschedule();
   return received;
 }
@@ -102,7 +102,7 @@ t800::Message link_in(Process& p, t800::Link& link, int end) {
 void deliver_to_mailbox(Process& router, Channel& c, t800::Message m) {
   router.communicate(m.bytes, true);
   c.mailbox.push_back(std::move(m));
-  c.mail.notify(sc_core::SC_ZERO_TIME);
+  c.mail.notify_delta();
 }
 
 FirstHop routed_first_hop(Process& p, const Channel& c, t800::Message m, double deadline_us) {
@@ -137,7 +137,7 @@ t800::Message receive(Process& p, Channel& c) {
       p.communicate(0, false);
       if (c.mailbox.empty()) {
         p.deschedule();
-        while (c.mailbox.empty()) sc_core::wait(c.mail);
+        while (c.mailbox.empty()) sc_core::wait(c.mail.get());
         p.reschedule();
       }
       t800::Message m = std::move(c.mailbox.front());

@@ -15,6 +15,7 @@
 
 #include <systemc>
 
+#include "network/lazy_event.hpp"
 #include "t800/link.hpp"
 #include "t800/message.hpp"
 
@@ -40,14 +41,14 @@ struct Channel {
   t800::Message* reader_destination = nullptr;  // where the waiting reader's message goes
   Process* waiting_writer = nullptr;
   t800::Message slot;  // the waiting writer's message
-  sc_core::sc_event handed_over;
+  LazyEvent handed_over;
   // direct: the link and the writer's end of it
   t800::Link* link = nullptr;
   int writer_end = 0;
   // routed: messages delivered at `to` by its router, waiting for the reader (a list: an empty one
   // allocates nothing, t800/link.hpp)
   std::list<t800::Message> mailbox;
-  sc_core::sc_event mail;
+  LazyEvent mail;
 };
 
 // Header a router needs on every routed message: destination channel and length, two words (U).

@@ -163,7 +163,7 @@ void Process::mark_ended() {
   deschedule();
   ended_ = true;
   set_status("ended");
-  ended_event_.notify(sc_core::SC_ZERO_TIME);
+  ended_event_.notify_delta();
 }
 
 }  // namespace network

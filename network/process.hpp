@@ -11,6 +11,7 @@
 
 #include <systemc>
 
+#include "network/lazy_event.hpp"
 #include "t800/compute_work.hpp"
 #include "t800/cpu.hpp"
 #include "t800/isa/instruction.hpp"
@@ -57,8 +58,8 @@ class Process {
   // Charges a short sequence of process instructions (ALT's, a timer's) to the CPU.
   void run_instructions(const t800::isa::Sequence& code);
   // An ALT waiting on this process's guards is woken by a writer arriving on one of them.
-  sc_core::sc_event& alt_event() { return alt_event_; }
-  void wake_alt() { alt_event_.notify(sc_core::SC_ZERO_TIME); }
+  sc_core::sc_event& alt_event() { return alt_event_.get(); }
+  void wake_alt() { alt_event_.notify_delta(); }
   t800::Priority priority() const { return descriptor_.priority; }
 
   int node() const { return node_; }  // processor index, or Machine::kHost
@@ -93,7 +94,7 @@ class Process {
   // Ends the process's life cycle (called by the machine once the body returns).
   void mark_ended();
   bool ended() const { return ended_; }
-  sc_core::sc_event& ended_event() { return ended_event_; }
+  sc_core::sc_event& ended_event() { return ended_event_.get(); }
   bool daemon() const { return daemon_; }  // routers run forever and are not waited for
   void set_daemon() { daemon_ = true; }
 
@@ -109,8 +110,8 @@ class Process {
   const Channel* channel_ = nullptr;
   bool outputting_ = false;
   std::vector<Process*> branches_;
-  sc_core::sc_event ended_event_;
-  sc_core::sc_event alt_event_;
+  LazyEvent ended_event_;
+  LazyEvent alt_event_;
 };
 
 }  // namespace network
