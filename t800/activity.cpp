@@ -32,20 +32,33 @@ ProcessorState ProcessorActivity::state() const {
   return ProcessorState::idle;
 }
 
+const std::string& ProcessorActivity::current_label() const {
+  return labelled_ ? label_ : kNoLabel;
+}
+
+double ProcessorActivity::us(const sc_core::sc_time& t) {
+  if (t != us_at_) {
+    us_at_ = t;
+    us_ = t.to_seconds() * 1e6;
+  }
+  return us_;
+}
+
 // `next_label`: the CPU's label while it works (an interval is split where it changes), else empty.
 void ProcessorActivity::settle(double t, const std::string& next_label) {
   const ProcessorState next = state();
-  if (next == current_ && next_label == current_label_) return;
+  if (next == current_ && next_label == current_label()) return;
   const double elapsed = t - since_us_;
   if (current_ != ProcessorState::idle) {
     total_us_[int(current_)] += elapsed;
     last_busy_us_ = t;
     if (keep_intervals_ && elapsed > 0)
-      intervals_.push_back({since_us_, t, int(current_), current_label_});
+      intervals_.push_back({since_us_, t, int(current_), current_label()});
   }
   if (next != ProcessorState::idle && first_busy_us_ < 0) first_busy_us_ = t;
   current_ = next;
-  current_label_ = next_label;
+  labelled_ = !next_label.empty();
+  if (labelled_ && label_ != next_label) label_ = next_label;
   since_us_ = t;
 }
 
@@ -54,23 +67,28 @@ double ProcessorActivity::busy_us_now() const {
 }
 
 void ProcessorActivity::set_cpu(ProcessorState cpu, const std::string& label) {
+  set_cpu(cpu, label, sc_core::sc_time_stamp());
+}
+
+void ProcessorActivity::set_cpu(ProcessorState cpu, const std::string& label,
+                                const sc_core::sc_time& now) {
   cpu_ = cpu;
-  settle(now_us(), cpu == ProcessorState::idle ? kNoLabel : label);
+  settle(us(now), cpu == ProcessorState::idle ? kNoLabel : label);
 }
 
 // While the CPU works the current interval is its own, so its label is the CPU's.
 const std::string& ProcessorActivity::cpu_label() const {
-  return cpu_ == ProcessorState::idle ? kNoLabel : current_label_;
+  return cpu_ == ProcessorState::idle ? kNoLabel : current_label();
 }
 
 void ProcessorActivity::transfer_begin() {
   ++transfers_;
-  settle(now_us(), cpu_label());
+  settle(us(sc_core::sc_time_stamp()), cpu_label());
 }
 
 void ProcessorActivity::transfer_end() {
   --transfers_;
-  settle(now_us(), cpu_label());
+  settle(us(sc_core::sc_time_stamp()), cpu_label());
 }
 
 void ProcessorActivity::close(const sc_core::sc_time& end) {

@@ -25,6 +25,8 @@ struct Interval {
 class ProcessorActivity {
  public:
   void set_cpu(ProcessorState cpu, const std::string& label = {});
+  // The same, with the current simulated time given by the caller (a CPU knows it already).
+  void set_cpu(ProcessorState cpu, const std::string& label, const sc_core::sc_time& now);
   void transfer_begin();
   void transfer_end();
   void keep_intervals(bool keep) { keep_intervals_ = keep; }
@@ -54,10 +56,19 @@ class ProcessorActivity {
   ProcessorState state() const;
   void settle(double now_us, const std::string& next_label);
   const std::string& cpu_label() const;
+  const std::string& current_label() const;
+  double us(const sc_core::sc_time& t);
   ProcessorState cpu_ = ProcessorState::idle;
   int transfers_ = 0;
   ProcessorState current_ = ProcessorState::idle;
-  std::string current_label_;
+  // The current interval's label is `label_` while `labelled_`, else empty: a CPU alternates
+  // between a block's label and none (idle between two blocks), so the string is only copied when
+  // the label differs from the last one.
+  std::string label_;
+  bool labelled_ = false;
+  // The last instant converted to microseconds (a block's end and the next one's start are one).
+  sc_core::sc_time us_at_ = sc_core::SC_ZERO_TIME;
+  double us_ = 0;
   double since_us_ = 0;
   double total_us_[3] = {0, 0, 0};
   double first_busy_us_ = -1, last_busy_us_ = 0;

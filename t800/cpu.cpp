@@ -89,9 +89,8 @@ sc_time Cpu::slice_end(const ProcessDescriptor& p) const {
   return kTimeslice * (ticks + 2.0);
 }
 
-bool Cpu::must_yield(const ProcessDescriptor& p) const {
+bool Cpu::must_yield(const ProcessDescriptor& p, const sc_time& now) const {
   if (p.priority == Priority::high) return false;
-  const sc_time now = sc_time_stamp();
   if (preempt_pending_ && now >= preempt_at_) return true;
   return timesliced() && !ready_low_.empty() && now >= slice_end(p);
 }
@@ -100,9 +99,8 @@ bool Cpu::must_yield(const ProcessDescriptor& p) const {
 // preemption, and, when another low-priority process waits, until its timeslice ends. At fine
 // fidelity it also wakes at every timeslice tick, as the hardware's timer does, whether or not
 // anyone waits.
-sc_time Cpu::slice_limit(const ProcessDescriptor& p, sc_time limit) {
+sc_time Cpu::slice_limit(const ProcessDescriptor& p, sc_time limit, const sc_time& now) {
   if (p.priority != Priority::low) return limit;
-  const sc_time now = sc_time_stamp();
   if (preempt_pending_) limit = std::min(limit, preempt_at_ - now);
   if (!timesliced()) return limit;
   if (!ready_low_.empty()) {
@@ -119,15 +117,25 @@ sc_time Cpu::slice_limit(const ProcessDescriptor& p, sc_time limit) {
 
 // The bytes the link engines have moved by a block's start t0 (counting those at t0), and by its
 // end (strictly before it, less those counted at t0 after the start was read).
+// An end that was still at the start and is still at the end with its count unchanged moved
+// nothing meanwhile: its part of the sum is what it was at the start (most ends, most blocks).
 std::int64_t Cpu::dma_at_start(const sc_time& t0) const {
   std::int64_t n = 0;
-  for (const DmaEnd& d : dma_) n += d.link->dma_bytes(d.end, t0, true);
+  for (const DmaEnd& d : dma_) {
+    d.still_at_start = d.link->dma_still(d.end);
+    d.at_start = d.link->dma_bytes_including_now(d.end, t0);
+    n += d.at_start;
+  }
   return n;
 }
 
 std::int64_t Cpu::dma_at_end(const sc_time& now, const sc_time& t0) const {
   std::int64_t n = 0;
-  for (const DmaEnd& d : dma_) n += d.link->dma_before_less_late(d.end, now, t0);
+  for (const DmaEnd& d : dma_) {
+    const bool unchanged =
+        d.still_at_start && d.link->dma_still(d.end) && d.link->dma_counted(d.end) == d.at_start;
+    n += unchanged ? d.at_start : d.link->dma_before_less_late(d.end, now, t0);
+  }
   return n;
 }
 
@@ -151,19 +159,19 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
   const bool stealing = fidelity_ != ComputeFidelity::block && !dma_.empty();
   sc_time remaining = cycles(n);
   while (remaining > SC_ZERO_TIME) {
-    if (must_yield(p)) {
-      yield(p, preempt_pending_ && sc_time_stamp() >= preempt_at_);
+    const sc_time start = sc_time_stamp();
+    if (must_yield(p, start)) {
+      yield(p, preempt_pending_ && start >= preempt_at_);
       continue;
     }
-    sc_time limit = slice_limit(p, remaining);
-    const sc_time start = sc_time_stamp();
+    sc_time limit = slice_limit(p, remaining, start);
     if (halt_armed_ && halt_at_ > start) limit = std::min(limit, halt_at_ - start);
     const std::int64_t dma_before = stealing ? dma_at_start(start) : 0;
-    activity_.set_cpu(kind, label);
+    activity_.set_cpu(kind, label, start);
     sc_core::wait(limit, p.interrupt);
-    activity_.set_cpu(ProcessorState::idle);
-    stop_if_halted(p);
     const sc_time end = sc_time_stamp();
+    activity_.set_cpu(ProcessorState::idle, {}, end);
+    stop_if_halted(p);
     remaining -= end - start;
     if (stealing) {  // every byte the link engines moved meanwhile took a memory cycle: the work
                      // takes longer

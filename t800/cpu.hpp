@@ -80,9 +80,10 @@ class Cpu {
   void dispatch_next();
   void yield(ProcessDescriptor& p, bool to_front);
   sc_core::sc_time slice_end(const ProcessDescriptor& p) const;
-  bool must_yield(const ProcessDescriptor& p) const;
+  bool must_yield(const ProcessDescriptor& p, const sc_core::sc_time& now) const;
   bool timesliced() const { return fidelity_ != ComputeFidelity::block; }
-  sc_core::sc_time slice_limit(const ProcessDescriptor& p, sc_core::sc_time limit);
+  sc_core::sc_time slice_limit(const ProcessDescriptor& p, sc_core::sc_time limit,
+                               const sc_core::sc_time& now);
   std::int64_t dma_at_start(const sc_core::sc_time& t0) const;
   std::int64_t dma_at_end(const sc_core::sc_time& now, const sc_core::sc_time& t0) const;
   void stop_if_halted(ProcessDescriptor& p);
@@ -99,6 +100,10 @@ class Cpu {
   struct DmaEnd {
     const Link* link;
     int end;
+    // Read at the start of the block now running: the end's count, and whether it was still then
+    // (Link::dma_still).
+    mutable std::int64_t at_start = 0;
+    mutable bool still_at_start = false;
   };
   std::vector<DmaEnd> dma_;
   bool halt_armed_ = false;
