@@ -9,6 +9,19 @@
 
 namespace network {
 
+void LastUser::set(Process& p) {
+  process = &p;
+  incarnation = p.incarnation();
+}
+
+bool LastUser::is(const Process& p) const {
+  return process == &p && incarnation == p.incarnation();
+}
+
+bool LastUser::ended() const {
+  return process->incarnation() != incarnation || process->ended();
+}
+
 namespace {
 
 // Rendezvous on one transputer: the first to arrive executes its instruction and deschedules; the

@@ -23,6 +23,17 @@ namespace network {
 
 class Process;
 
+// The process that last output (or input) on a channel, for deadlock reports. A PAR branch's
+// record is used again by the next branch of its name (Machine::spawn), so the use is remembered
+// with it: a record now running a later incarnation means the one that used the channel has ended.
+struct LastUser {
+  Process* process = nullptr;
+  std::uint32_t incarnation = 0;
+  void set(Process& p);
+  bool is(const Process& p) const;  // p, in its present incarnation
+  bool ended() const;
+};
+
 struct Channel {
   enum class Kind { internal, direct, routed };
 
@@ -32,8 +43,7 @@ struct Channel {
   Kind kind = Kind::internal;
   std::vector<int> path;  // nodes from `from` to `to`, for direct and routed channels
   // The processes that last output and input on it (or are trying to), for deadlock reports.
-  Process* last_writer = nullptr;
-  Process* last_reader = nullptr;
+  LastUser last_writer, last_reader;
 
   // internal rendezvous; a reader in an ALT with this channel's guard enabled (occam's enbc)
   Process* alting_reader = nullptr;

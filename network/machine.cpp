@@ -259,26 +259,45 @@ void Machine::place_memory() {
 Process& Machine::spawn(int node, const std::string& name, t800::Priority priority,
                         Process::Body body) {
   processes_.push_back(std::make_unique<Process>(*this, node, name, priority));
-  Process* p = processes_.back().get();
+  Process& p = *processes_.back();
+  p.set_spawned(++spawned_);
+  start(p, std::move(body));
+  return p;
+}
+
+void Machine::spawn_again(Process& record, t800::Priority priority, Process::Body body) {
+  record.begin_again(priority, ++spawned_);
+  start(record, std::move(body));
+}
+
+void Machine::start(Process& p, Process::Body body) {
   if (!sc_core::sc_is_running()) {
-    pending_.emplace_back(p, std::move(body));
-    return *p;
+    pending_.emplace_back(&p, std::move(body));
+    return;
   }
   if (idle_threads_.empty()) {
     threads_.push_back(std::make_unique<PooledThread>());
     PooledThread* t = threads_.back().get();
-    t->process = p;
+    t->process = &p;
     t->body = std::move(body);
     handles_.push_back(
         sc_core::sc_spawn([this, t] { pooled_thread(*t); }, sc_core::sc_gen_unique_name("proc")));
-    return *p;
+    return;
   }
   PooledThread* t = idle_threads_.back();
   idle_threads_.pop_back();
-  t->process = p;
+  t->process = &p;
   t->body = std::move(body);
   t->assigned.notify();  // runnable now, as a newly spawned thread would be
-  return *p;
+}
+
+std::vector<const Process*> Machine::processes_in_start_order() const {
+  std::vector<const Process*> order;
+  order.reserve(processes_.size());
+  for (const auto& p : processes_) order.push_back(p.get());
+  std::sort(order.begin(), order.end(),
+            [](const Process* a, const Process* b) { return a->spawned() < b->spawned(); });
+  return order;
 }
 
 void Machine::pooled_thread(PooledThread& t) {
@@ -324,7 +343,7 @@ std::vector<BlockedProcess> Machine::run() {
   for (auto& t : transputers_) t->activity().close(sc_core::sc_time_stamp());
 
   std::vector<BlockedProcess> blocked;
-  for (auto& p : processes_)
+  for (const Process* p : processes_in_start_order())
     if (limit_ == Limit::none && !p->ended() && !p->daemon())
       blocked.push_back({p->name(), node_name(p->node()), p->status(), waits_for(*this, *p)});
   if (!blocked.empty()) wait_cycle_ = network::wait_cycle(*this);

@@ -124,8 +124,12 @@ class Machine {
   // The nodes a channel from -> to passes (both included; the host is kHost): a shortest path,
   // lowest link first (network/routes.hpp). Empty when there is none.
   std::vector<int> route(int from, int to) const;
-  // The processes running on nodes, for reports.
+  // The processes running on nodes, for reports: every record, a PAR branch's record where its
+  // name was first spawned (see Process::incarnation); and in the order they were spawned.
   const std::vector<std::unique_ptr<Process>>& processes() const { return processes_; }
+  std::vector<const Process*> processes_in_start_order() const;
+  // As spawn, with the record of an ended process of the same name (Process::reusable).
+  void spawn_again(Process& record, t800::Priority priority, Process::Body body);
   // The faults injected into this run and what each did (network/faults.hpp).
   FaultLog& faults() { return faults_; }
   const FaultLog& faults() const { return faults_; }
@@ -147,6 +151,8 @@ class Machine {
   std::vector<LinkInfo> links_;
   std::vector<std::unique_ptr<Channel>> channels_;
   std::vector<std::unique_ptr<Process>> processes_;
+  std::uint64_t spawned_ = 0;
+  void start(Process& p, Process::Body body);
   std::vector<std::pair<Process*, Process::Body>> pending_;
   // SystemC threads that ran a process spawned during the run (a PAR's branch) and wait for the
   // next: creating a thread allocates and maps a stack, the most expensive thing a PAR would

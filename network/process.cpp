@@ -50,7 +50,7 @@ void Process::reschedule() {
 
 void Process::out(Channel& channel, t800::Message message) {
   set_status("out on channel", &channel);
-  channel.last_writer = this;
+  channel.last_writer.set(*this);
   channel_ = &channel;
   outputting_ = true;
   send(*this, channel, std::move(message));
@@ -60,7 +60,7 @@ void Process::out(Channel& channel, t800::Message message) {
 
 t800::Message Process::in(Channel& channel) {
   set_status("in on channel", &channel);
-  channel.last_reader = this;
+  channel.last_reader.set(*this);
   channel_ = &channel;
   outputting_ = false;
   t800::Message m = receive(*this, channel);
@@ -69,17 +69,32 @@ t800::Message Process::in(Channel& channel) {
   return m;
 }
 
-// A branch's body is referred to, not copied: PAR returns only when every branch has ended.
+// Branch i of a PAR, named after it: the record of the previous PAR's branch i where it can start
+// again (Process::reusable; always, but for a preemption's interrupt still due), else a new one.
+// Its body is referred to, not copied: PAR returns only when every branch has ended.
+Process& Process::start_branch(std::size_t i, t800::Priority priority, const Body& body) {
+  Body run = [&body](Process& child) {
+    body(child);
+    child.compute(t800::timing::end_process_cycles(), "endp");
+  };
+  if (i < branch_records_.size() && branch_records_[i]->reusable()) {
+    machine_.spawn_again(*branch_records_[i], priority, std::move(run));
+    return *branch_records_[i];
+  }
+  Process& child =
+      machine_.spawn(node_, name() + "." + std::to_string(i), priority, std::move(run));
+  if (i < branch_records_.size())
+    branch_records_[i] = &child;
+  else
+    branch_records_.push_back(&child);
+  return child;
+}
+
 void Process::par(const std::vector<Body>& branches) {
   std::vector<Process*> children;
   for (std::size_t i = 0; i < branches.size(); ++i) {
     compute(t800::timing::start_process_cycles(), "startp");
-    const Body& body = branches[i];
-    children.push_back(&machine_.spawn(node_, name() + "." + std::to_string(i),
-                                       descriptor_.priority, [&body](Process& child) {
-                                         body(child);
-                                         child.compute(t800::timing::end_process_cycles(), "endp");
-                                       }));
+    children.push_back(&start_branch(i, descriptor_.priority, branches[i]));
   }
   set_status("waiting for its parallel branches");
   branches_ = children;
@@ -95,11 +110,7 @@ void Process::pri_par(const Body& high, const std::vector<Body>& low) {
   std::vector<Process*> children;
   auto start = [&](const Body& body, t800::Priority priority, std::size_t i) {
     compute(t800::timing::start_process_cycles(), "startp");
-    children.push_back(
-        &machine_.spawn(node_, name() + "." + std::to_string(i), priority, [&body](Process& child) {
-          body(child);
-          child.compute(t800::timing::end_process_cycles(), "endp");
-        }));
+    children.push_back(&start_branch(i, priority, body));
   };
   start(high, t800::Priority::high, 0);
   for (std::size_t i = 0; i < low.size(); ++i) start(low[i], t800::Priority::low, i + 1);
@@ -164,6 +175,27 @@ void Process::mark_ended() {
   ended_ = true;
   set_status("ended");
   ended_event_.notify_delta();
+  ended_delta_ = sc_core::sc_delta_count();
+}
+
+bool Process::reusable() const {
+  return ended_ && sc_core::sc_delta_count() > ended_delta_ &&
+         sc_core::sc_time_stamp() >= descriptor_.interrupt_due;
+}
+
+void Process::begin_again(t800::Priority priority, std::uint64_t spawned) {
+  ++incarnation_;
+  spawned_ = spawned;
+  descriptor_.priority = priority;
+  descriptor_.dispatched_at = sc_core::SC_ZERO_TIME;
+  doing_ = "not started";
+  about_ = nullptr;
+  status_text_.clear();
+  ended_ = false;
+  daemon_ = false;
+  channel_ = nullptr;
+  outputting_ = false;
+  branches_.clear();
 }
 
 }  // namespace network

@@ -98,6 +98,19 @@ class Process {
   bool daemon() const { return daemon_; }  // routers run forever and are not waited for
   void set_daemon() { daemon_ = true; }
 
+  // A PAR branch's record is used again by the next branch of its name on its node
+  // (Machine::spawn): a PAR in a loop spawns the same branches every time round, and a long run
+  // would otherwise keep a record for every branch it ever ran. Which use of the record this is,
+  // and when it was spawned (reports list processes in that order).
+  std::uint32_t incarnation() const { return incarnation_; }
+  std::uint64_t spawned() const { return spawned_; }
+  void set_spawned(std::uint64_t n) { spawned_ = n; }
+  // Ended, and no notification of the ended process's own is still to come (its join at the next
+  // delta, a preemption's timed interrupt): the record can start again without inheriting any.
+  bool reusable() const;
+  // The record, reusable, becomes a new process of the same name.
+  void begin_again(t800::Priority priority, std::uint64_t spawned);
+
  private:
   Machine& machine_;
   int node_;
@@ -112,6 +125,12 @@ class Process {
   std::vector<Process*> branches_;
   LazyEvent ended_event_;
   LazyEvent alt_event_;
+  // The records of the last PAR's branches, by index, for the next PAR's (start_branch).
+  std::vector<Process*> branch_records_;
+  Process& start_branch(std::size_t i, t800::Priority priority, const Body& body);
+  std::uint32_t incarnation_ = 0;
+  std::uint64_t spawned_ = 0;
+  std::uint64_t ended_delta_ = 0;  // sc_delta_count() when it ended
 };
 
 }  // namespace network

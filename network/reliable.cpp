@@ -32,7 +32,7 @@ void reset_channel(Process& p) {
 template <class Body>
 auto communicating(Process& p, Channel& c, bool output, Body body) {
   p.set_status(output ? "out (or fail) on channel" : "in (or fail) on channel", &c);
-  (output ? c.last_writer : c.last_reader) = &p;
+  (output ? c.last_writer : c.last_reader).set(p);
   auto result = body();
   p.set_status("running");
   return result;

@@ -15,22 +15,28 @@ std::string who(const Machine& m, const Process& p) {
   return p.name() + " on " + m.node_name(p.node());
 }
 
+// A process waited for, and whether it has ended (a channel's last user may have).
+struct Waited {
+  const Process* process;
+  bool ended;
+};
+
 // The processes `p` waits for (see the header); empty when nobody could end its wait.
-std::vector<const Process*> waited_for(const Machine& m, const Process& p) {
-  std::vector<const Process*> out;
+std::vector<Waited> waited_for(const Machine& m, const Process& p) {
+  std::vector<Waited> out;
   if (!p.branches().empty()) {
     for (const Process* branch : p.branches())
-      if (!branch->ended()) out.push_back(branch);
+      if (!branch->ended()) out.push_back({branch, false});
     return out;
   }
   const Channel* c = p.channel();
   if (!c) return out;
-  const Process* other = p.outputting() ? c->last_reader : c->last_writer;
-  if (other && other != &p) return {other};
+  const LastUser& other = p.outputting() ? c->last_reader : c->last_writer;
+  if (other.process && !other.is(p)) return {{other.process, other.ended()}};
   const int node = p.outputting() ? c->to : c->from;
-  for (const auto& q : m.processes())
-    if (q.get() != &p && q->node() == node && !q->ended() && !q->daemon() && q->branches().empty())
-      out.push_back(q.get());
+  for (const Process* q : m.processes_in_start_order())
+    if (q != &p && q->node() == node && !q->ended() && !q->daemon() && q->branches().empty())
+      out.push_back({q, false});
   return out;
 }
 
@@ -46,7 +52,7 @@ std::string how(const Process& p) {
 }  // namespace
 
 std::string waits_for(const Machine& m, const Process& p) {
-  const std::vector<const Process*> others = waited_for(m, p);
+  const std::vector<Waited> others = waited_for(m, p);
   if (others.empty()) {
     const Channel* c = p.channel();
     if (!c) return "nobody";
@@ -54,9 +60,9 @@ std::string waits_for(const Machine& m, const Process& p) {
            (p.outputting() ? " inputs from channel " : " outputs on channel ") + c->name;
   }
   std::string text;
-  for (const Process* q : others) {
-    text += (text.empty() ? "" : ", ") + who(m, *q);
-    text += q->ended() ? ", which has ended" : " (" + q->status() + ")";
+  for (const Waited& q : others) {
+    text += (text.empty() ? "" : ", ") + who(m, *q.process);
+    text += q.ended ? ", which has ended" : " (" + q.process->status() + ")";
   }
   return text;
 }
@@ -70,8 +76,9 @@ std::vector<std::string> wait_cycle(const Machine& m) {
   auto visit = [&](auto&& self, const Process* p) -> bool {
     mark[p] = Mark::on_path;
     path.push_back(p);
-    for (const Process* next : waited_for(m, *p)) {
-      if (next->ended()) continue;
+    for (const Waited& waited : waited_for(m, *p)) {
+      if (waited.ended) continue;
+      const Process* next = waited.process;
       if (mark[next] == Mark::on_path) {
         const auto start = std::find(path.begin(), path.end(), next);
         for (auto it = start; it != path.end(); ++it) {
@@ -86,9 +93,8 @@ std::vector<std::string> wait_cycle(const Machine& m) {
     mark[p] = Mark::done;
     return false;
   };
-  for (const auto& p : m.processes())
-    if (!p->ended() && !p->daemon() && mark[p.get()] == Mark::unseen && visit(visit, p.get()))
-      break;
+  for (const Process* p : m.processes_in_start_order())
+    if (!p->ended() && !p->daemon() && mark[p] == Mark::unseen && visit(visit, p)) break;
   return cycle;
 }
 

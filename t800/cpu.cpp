@@ -31,6 +31,7 @@ void Cpu::make_ready(ProcessDescriptor& p) {
       preempt_pending_ = true;
       preempt_at_ = sc_time_stamp() + latency_;
       running_->interrupt.notify(latency_);
+      running_->interrupt_due = preempt_at_;
     }
   } else {
     ready_low_.push_back(&p);

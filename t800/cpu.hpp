@@ -32,6 +32,9 @@ struct ProcessDescriptor {
   sc_core::sc_event wake;       // dispatched
   sc_core::sc_event interrupt;  // a running compute block must look at the queues again
   sc_core::sc_time dispatched_at;
+  // When the last preemption notified `interrupt` for (a timed notification still pending until
+  // then, even if the process has stopped running): a record used again must not inherit it.
+  sc_core::sc_time interrupt_due;
 };
 
 struct CpuStatistics {
