@@ -111,6 +111,15 @@ TEST_F(Plot, UtilisationFromARunReport) {
   EXPECT_TRUE(is_png(dir_ + "/u.png"));
 }
 
+// The fidelity benchmark's CSV as the README shows it (docs/bench-fidelity.csv), whose trajectory
+// points lie side by side at the same error.
+TEST_F(Plot, BenchFromTheFidelityBenchmarksCsv) {
+  const auto o = plot("bench docs/bench-fidelity.csv -o " + dir_ + "/f.svg");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  const std::string svg = read_file(dir_ + "/f.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+}
+
 TEST_F(Plot, BadInputsAreOneLineErrors) {
   sweep_test::write_file(dir_ + "/r.csv", "workload.bytes,tp_us,status\n1,2,ok\n");
   auto o = plot("speedup " + dir_ + "/r.csv -o " + dir_ + "/s.png");
