@@ -24,8 +24,9 @@ namespace network {
 class Process;
 
 // The process that last output (or input) on a channel, for deadlock reports. A PAR branch's
-// record is used again by the next branch of its name (Machine::spawn), so the use is remembered
-// with it: a record now running a later incarnation means the one that used the channel has ended.
+// record is used again by the next PAR's branch of its index (Process::start_branch), so the use is
+// remembered with it: a record now running a later incarnation means the one that used the channel
+// has ended.
 struct LastUser {
   Process* process = nullptr;
   std::uint32_t incarnation = 0;

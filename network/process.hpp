@@ -98,10 +98,10 @@ class Process {
   bool daemon() const { return daemon_; }  // routers run forever and are not waited for
   void set_daemon() { daemon_ = true; }
 
-  // A PAR branch's record is used again by the next branch of its name on its node
-  // (Machine::spawn): a PAR in a loop spawns the same branches every time round, and a long run
-  // would otherwise keep a record for every branch it ever ran. Which use of the record this is,
-  // and when it was spawned (reports list processes in that order).
+  // A PAR branch's record is used again by the next PAR's branch of its index (start_branch,
+  // Machine::spawn_again): a PAR in a loop spawns the same branches every time round, and a long
+  // run would otherwise keep a record for every branch it ever ran. Which use of the record this
+  // is, and when it was spawned (reports list processes in that order).
   std::uint32_t incarnation() const { return incarnation_; }
   std::uint64_t spawned() const { return spawned_; }
   void set_spawned(std::uint64_t n) { spawned_ = n; }

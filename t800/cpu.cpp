@@ -120,9 +120,9 @@ sc_time Cpu::slice_limit(const ProcessDescriptor& p, sc_time limit, const sc_tim
 // end (strictly before it, less those counted at t0 after the start was read).
 // An end that was still at the start and is still at the end with its count unchanged moved
 // nothing meanwhile: its part of the sum is what it was at the start (most ends, most blocks).
-std::int64_t Cpu::dma_at_start(const sc_time& t0) const {
+std::int64_t Cpu::dma_at_start(const sc_time& t0) {
   std::int64_t n = 0;
-  for (const DmaEnd& d : dma_) {
+  for (DmaEnd& d : dma_) {
     d.still_at_start = d.link->dma_still(d.end);
     d.at_start = d.link->dma_bytes_including_now(d.end, t0);
     n += d.at_start;

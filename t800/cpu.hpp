@@ -87,7 +87,7 @@ class Cpu {
   bool timesliced() const { return fidelity_ != ComputeFidelity::block; }
   sc_core::sc_time slice_limit(const ProcessDescriptor& p, sc_core::sc_time limit,
                                const sc_core::sc_time& now);
-  std::int64_t dma_at_start(const sc_core::sc_time& t0) const;
+  std::int64_t dma_at_start(const sc_core::sc_time& t0);  // marks each end (DmaEnd)
   std::int64_t dma_at_end(const sc_core::sc_time& now, const sc_core::sc_time& t0) const;
   void stop_if_halted(ProcessDescriptor& p);
 
@@ -105,8 +105,8 @@ class Cpu {
     int end;
     // Read at the start of the block now running: the end's count, and whether it was still then
     // (Link::dma_still).
-    mutable std::int64_t at_start = 0;
-    mutable bool still_at_start = false;
+    std::int64_t at_start = 0;
+    bool still_at_start = false;
   };
   std::vector<DmaEnd> dma_;
   bool halt_armed_ = false;
