@@ -33,7 +33,7 @@ std::int64_t clock_events(Machine& m) {
 
 ActivitySnapshot snapshot(Machine& m) {
   ActivitySnapshot s;
-  s.at = sc_core::sc_time_stamp();
+  s.at = t800::sim_now();
   for (int i = 0; i < m.processors(); ++i) {
     const t800::ProcessorActivity& a = m.transputer(i).activity();
     s.compute_us.push_back(a.compute_us());
@@ -56,7 +56,7 @@ ActivitySnapshot snapshot(Machine& m) {
 
 ActivityDelta delta_since(Machine& m, const ActivitySnapshot& before) {
   ActivityDelta d;
-  d.duration = sc_core::sc_time_stamp() - before.at;
+  d.duration = t800::sim_now() - before.at;
   const double start_us = to_us(before.at);
   for (int i = 0; i < m.processors(); ++i) {
     const std::size_t k = std::size_t(i);
@@ -102,7 +102,7 @@ void credit(Machine& m, const ActivityDelta& d, const sc_core::sc_time& start) {
 }
 
 void replay(Process& p, const ActivityDelta& d) {
-  const sc_core::sc_time start = sc_core::sc_time_stamp();
+  const sc_core::sc_time start = t800::sim_now();
   sc_core::wait(d.duration);
   credit(p.machine(), d, start);
 }

@@ -104,7 +104,7 @@ void wait_for_a_guard(Process& p, const std::vector<Guard>& guards) {
     if (earliest == std::numeric_limits<std::int64_t>::max())
       sc_core::wait(events);
     else
-      sc_core::wait(p.time_after(earliest) - sc_core::sc_time_stamp(), events);
+      sc_core::wait(p.time_after(earliest) - t800::sim_now(), events);
   }
   for (const Guard& g : guards)
     if (g.kind == Guard::Kind::input && g.channel->alting_reader == &p)

@@ -74,7 +74,7 @@ void FaultLog::fired(std::size_t i, const std::string& what) {
   FaultRecord& r = records_.at(i);
   if (r.fired) return;
   r.fired = true;
-  r.fired_us = sc_core::sc_time_stamp().to_seconds() * 1e6;
+  r.fired_us = t800::sim_now().to_seconds() * 1e6;
   r.hit = what;
 }
 
@@ -91,7 +91,7 @@ int FaultLog::detected(const Machine& m, const std::vector<int>& path, const std
     ++n;
     if (!r.detected_by.empty()) continue;
     r.detected_by = by;
-    r.detected_us = sc_core::sc_time_stamp().to_seconds() * 1e6;
+    r.detected_us = t800::sim_now().to_seconds() * 1e6;
   }
   return n;
 }
@@ -102,7 +102,7 @@ void FaultLog::recovered(const Machine& m, const std::vector<int>& path, const s
     // recovered from once the program has worked round it the first time.
     if (r.detected_by.empty() || !r.recovered_how.empty() || !on_path(m, r, path)) continue;
     r.recovered_how = how;
-    r.recovered_us = sc_core::sc_time_stamp().to_seconds() * 1e6;
+    r.recovered_us = t800::sim_now().to_seconds() * 1e6;
   }
 }
 

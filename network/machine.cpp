@@ -339,8 +339,8 @@ std::vector<BlockedProcess> Machine::run() {
   else
     sc_core::sc_start();
   events_ = sc_core::sc_delta_count();
-  end_us_ = sc_core::sc_time_stamp().to_seconds() * 1e6;
-  for (auto& t : transputers_) t->activity().close(sc_core::sc_time_stamp());
+  end_us_ = t800::sim_now().to_seconds() * 1e6;
+  for (auto& t : transputers_) t->activity().close(t800::sim_now());
 
   std::vector<BlockedProcess> blocked;
   for (const Process* p : processes_in_start_order())
@@ -367,7 +367,7 @@ void Machine::run_with_limits() {
   sc_time slice = options_.max_wall_s > 0 ? sc_time(1, sc_core::SC_US) : sim_limit;
   // Before the first sc_start nothing is pending yet: the processes start in its initialisation.
   for (bool first = true; first || sc_core::sc_pending_activity(); first = false) {
-    const sc_time now = sc_core::sc_time_stamp();
+    const sc_time now = t800::sim_now();
     const sc_time next = first ? sc_core::SC_ZERO_TIME : sc_core::sc_time_to_pending_activity();
     if (next > sim_limit - now) {
       limit_ = Limit::sim_time;  // the next event lies beyond the limit
@@ -377,8 +377,7 @@ void Machine::run_with_limits() {
     const double before = wall_s();
     sc_core::sc_start(std::min(std::max(slice, next), sim_limit - now),
                       sc_core::SC_EXIT_ON_STARVATION);
-    if (sc_core::sc_time_stamp() == now && sc_core::sc_delta_count() == deltas)
-      return;  // nothing moved
+    if (t800::sim_now() == now && sc_core::sc_delta_count() == deltas) return;  // nothing moved
     if (options_.max_wall_s > 0 && wall_s() >= options_.max_wall_s) {
       if (sc_core::sc_pending_activity()) limit_ = Limit::wall_time;
       return;

@@ -146,7 +146,7 @@ void Process::wait_after(std::int64_t t) {
   if (!future) return;
   set_status("waiting for its timer");
   deschedule();
-  sc_core::wait(time_after(t) - sc_core::sc_time_stamp());
+  sc_core::wait(time_after(t) - t800::sim_now());
   reschedule();
   set_status("running");
 }
@@ -180,7 +180,7 @@ void Process::mark_ended() {
 
 bool Process::reusable() const {
   return ended_ && sc_core::sc_delta_count() > ended_delta_ &&
-         sc_core::sc_time_stamp() >= descriptor_.interrupt_due;
+         t800::sim_now() >= descriptor_.interrupt_due;
 }
 
 void Process::begin_again(t800::Priority priority, std::uint64_t spawned) {

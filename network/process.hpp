@@ -65,7 +65,7 @@ class Process {
   int node() const { return node_; }  // processor index, or Machine::kHost
   const std::string& name() const { return descriptor_.name; }
   bool on_host() const;
-  double now_us() const { return sc_core::sc_time_stamp().to_seconds() * 1e6; }
+  double now_us() const { return t800::sim_now().to_seconds() * 1e6; }
   Machine& machine() { return machine_; }
 
   // For the channel implementations: CPU work of a communication instruction for a message of

@@ -83,8 +83,8 @@ std::optional<t800::Message> in_or_fail(Process& p, Channel& c, double deadline_
     if (c.kind == Channel::Kind::direct) {
       m = c.link->receive(1 - c.writer_end, at_us(deadline_us));
     } else {
-      while (c.mailbox.empty() && sc_core::sc_time_stamp() < at_us(deadline_us))
-        sc_core::wait(at_us(deadline_us) - sc_core::sc_time_stamp(), c.mail.get());
+      while (c.mailbox.empty() && t800::sim_now() < at_us(deadline_us))
+        sc_core::wait(at_us(deadline_us) - t800::sim_now(), c.mail.get());
       if (!c.mailbox.empty()) {
         m = std::move(c.mailbox.front());
         c.mailbox.pop_front();

@@ -31,7 +31,7 @@ double Process::now_us() const {
 }
 
 Process::Instant Process::instant() const {
-  return {sc_core::sc_time_stamp().value()};
+  return {t800::sim_now().value()};
 }
 
 double Process::us_between(Instant from, Instant to) {

@@ -4,13 +4,14 @@
 #include <stdexcept>
 
 #include "t800/repeated_sum.hpp"
+#include "t800/sim_now.hpp"
 
 namespace t800 {
 
 namespace {
 const std::string kNoLabel;
 double now_us() {
-  return sc_core::sc_time_stamp().to_seconds() * 1e6;
+  return sim_now().to_seconds() * 1e6;
 }
 }  // namespace
 
@@ -67,7 +68,7 @@ double ProcessorActivity::busy_us_now() const {
 }
 
 void ProcessorActivity::set_cpu(ProcessorState cpu, const std::string& label) {
-  set_cpu(cpu, label, sc_core::sc_time_stamp());
+  set_cpu(cpu, label, sim_now());
 }
 
 void ProcessorActivity::set_cpu(ProcessorState cpu, const std::string& label,
@@ -83,12 +84,12 @@ const std::string& ProcessorActivity::cpu_label() const {
 
 void ProcessorActivity::transfer_begin() {
   ++transfers_;
-  settle(us(sc_core::sc_time_stamp()), cpu_label());
+  settle(us(sim_now()), cpu_label());
 }
 
 void ProcessorActivity::transfer_end() {
   --transfers_;
-  settle(us(sc_core::sc_time_stamp()), cpu_label());
+  settle(us(sim_now()), cpu_label());
 }
 
 void ProcessorActivity::close(const sc_core::sc_time& end) {

@@ -74,8 +74,11 @@ std::int64_t ComputeModel::cycles(const ComputeWork& work) const {
 
 std::int64_t ComputeModel::communication_cycles(std::int64_t bytes, bool copies) const {
   const std::int64_t key = copies ? -bytes - 1 : bytes;
+  Recent& recent = communication_recent_[std::uint64_t(key) % communication_recent_.size()];
+  if (recent.key == key) return recent.cycles;
+  recent.key = key;
   auto found = communication_.find(key);
-  if (found != communication_.end()) return found->second;
+  if (found != communication_.end()) return recent.cycles = found->second;
   const isa::MemoryRef workspace{isa::Region::workspace, -1};
   const std::int64_t words = copies ? (bytes + 3) / 4 : 0;  // part words count as whole
   const std::int64_t cycles = process_cycles({
@@ -85,7 +88,7 @@ std::int64_t ComputeModel::communication_cycles(std::int64_t bytes, bool copies)
       {isa::Op::in, 0, words, false, workspace, "in (or out)"},
   });
   communication_.emplace(key, cycles);
-  return cycles;
+  return recent.cycles = cycles;
 }
 
 std::int64_t ComputeModel::process_cycles(const isa::Sequence& code) const {

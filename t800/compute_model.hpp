@@ -5,7 +5,9 @@
 // run many times is compiled and timed once.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <unordered_map>
 
@@ -81,6 +83,13 @@ class ComputeModel {
   // By kernel; code_ keeps each kernel alive, so the keys stay unique.
   mutable std::unordered_map<const codegen::Recording*, Compiled> compiled_;
   mutable std::unordered_map<std::int64_t, std::int64_t> communication_;  // by signed length
+  // The lengths asked last, by signed length modulo the size: asked at every channel communication,
+  // and a hash table's lookup was a percent of a finest-level run.
+  struct Recent {
+    std::int64_t key = std::numeric_limits<std::int64_t>::min();  // no length
+    std::int64_t cycles = 0;
+  };
+  mutable std::array<Recent, 16> communication_recent_;
 };
 
 }  // namespace t800

@@ -10,7 +10,7 @@ namespace t800 {
 
 using sc_core::SC_NS;
 using sc_core::sc_time;
-using sc_core::sc_time_stamp;
+
 using sc_core::SC_ZERO_TIME;
 
 namespace {
@@ -29,7 +29,7 @@ void Cpu::make_ready(ProcessDescriptor& p) {
       // The running low-priority process keeps the CPU for the interrupt latency, then is
       // preempted.
       preempt_pending_ = true;
-      preempt_at_ = sc_time_stamp() + latency_;
+      preempt_at_ = sim_now() + latency_;
       running_->interrupt.notify(latency_);
       running_->interrupt_due = preempt_at_;
     }
@@ -50,7 +50,7 @@ void Cpu::dispatch_next() {
   running_ = queue.front();
   queue.pop_front();
   if (running_->priority == Priority::high) preempt_pending_ = false;
-  running_->dispatched_at = sc_time_stamp();
+  running_->dispatched_at = sim_now();
   ++stats_.dispatches;
   running_->wake.notify(SC_ZERO_TIME);
 }
@@ -160,7 +160,7 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
   const bool stealing = fidelity_ != ComputeFidelity::block && !dma_.empty();
   sc_time remaining = cycles(n);
   while (remaining > SC_ZERO_TIME) {
-    const sc_time start = sc_time_stamp();
+    const sc_time start = sim_now();
     if (must_yield(p, start)) {
       yield(p, preempt_pending_ && start >= preempt_at_);
       continue;
@@ -169,8 +169,11 @@ void Cpu::execute(ProcessDescriptor& p, std::int64_t n, ProcessorState kind,
     if (halt_armed_ && halt_at_ > start) limit = std::min(limit, halt_at_ - start);
     const std::int64_t dma_before = stealing ? dma_at_start(start) : 0;
     activity_.set_cpu(kind, label, start);
-    sc_core::wait(limit, p.interrupt);
-    const sc_time end = sc_time_stamp();
+    if (p.priority == Priority::high)
+      sc_core::wait(limit);  // nothing interrupts it (make_ready): the kernel need not watch for it
+    else
+      sc_core::wait(limit, p.interrupt);
+    const sc_time end = sim_now();
     activity_.set_cpu(ProcessorState::idle, {}, end);
     stop_if_halted(p);
     remaining -= end - start;

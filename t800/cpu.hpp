@@ -18,6 +18,7 @@
 
 #include "t800/activity.hpp"
 #include "t800/fidelity.hpp"
+#include "t800/sim_now.hpp"
 
 namespace t800 {
 
@@ -74,7 +75,7 @@ class Cpu {
   // would run, so it adds no event: a compute block running at `at` stops there, and no process
   // runs again (each stays where it was, for ever). `hit` is called with the process stopped.
   void halt_at(const sc_core::sc_time& at, std::function<void(const std::string&)> hit);
-  bool halted() const { return halt_armed_ && sc_core::sc_time_stamp() >= halt_at_; }
+  bool halted() const { return halt_armed_ && sim_now() >= halt_at_; }
   sc_core::sc_time cycles(std::int64_t n) const { return cycle_ * double(n); }
   const CpuStatistics& statistics() const { return stats_; }
 

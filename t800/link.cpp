@@ -11,7 +11,7 @@ namespace t800 {
 
 using sc_core::SC_NS;
 using sc_core::sc_time;
-using sc_core::sc_time_stamp;
+
 using sc_core::SC_ZERO_TIME;
 
 namespace {
@@ -59,13 +59,13 @@ Link::Link(const sc_core::sc_module_name& name, const LinkConfig& config, Proces
 Link::ClosedForm::ClosedForm(int d) : milestone(role("milestone", d).c_str()) {}
 
 Link::Direction::Direction(int d)
-    : sent_event(role("sent", d).c_str()),
+    : closed_form(d),
+      sent_event(role("sent", d).c_str()),
       submitted_event(role("submitted", d).c_str()),
       delivered_event(role("delivered", d).c_str()),
       wire_wake(role("wire_wake", d).c_str()),
       detect_event(role("detect_event", d).c_str()),
-      process_event(role("process_event", d).c_str()),
-      closed_form(d) {}
+      process_event(role("process_event", d).c_str()) {}
 
 std::int64_t Link::submit(int from, Message message) {
   Direction& d = dir_[from];
@@ -110,7 +110,7 @@ void Link::arm_input(int di) {
   if (d.closed_form.active) {
     if (!d.closed_form.armed) {  // the schedule is known from now on
       d.closed_form.armed = true;
-      d.closed_form.armed_at = sc_time_stamp();
+      d.closed_form.armed_at = sim_now();
       d.closed_form.milestone.notify(SC_ZERO_TIME);
     }
   } else {
@@ -135,7 +135,7 @@ void Link::DmaCount::add_increasing(std::int64_t n, const sc_time& last) {
 }
 
 void Link::DmaCount::add(std::int64_t n, const sc_time& at, bool counted_first) {
-  if (!counted_first && queried && at == query_at && at == sc_time_stamp()) late += n;
+  if (!counted_first && queried && at == query_at && at == sim_now()) late += n;
   total += n;
   if (at > latest_at) {
     latest_at = at;
@@ -175,12 +175,12 @@ std::int64_t Link::dma_before_less_late(int e, const sc_time& now, const sc_time
 
 void Link::on_wire(int w) {
   const Direction& own = dir_[w];
-  if (own.carrying != WirePacket::none && sc_time_stamp() < own.wire_busy_until) {
+  if (own.carrying != WirePacket::none && sim_now() < own.wire_busy_until) {
     // a packet started by start_at_once, and a wire_wake came before its end
-    return sc_core::next_trigger(own.wire_busy_until - sc_time_stamp());
+    return sc_core::next_trigger(own.wire_busy_until - sim_now());
   }
   finish_packet(w);
-  if (start_packet(w)) sc_core::next_trigger(dir_[w].wire_busy_until - sc_time_stamp());
+  if (start_packet(w)) sc_core::next_trigger(dir_[w].wire_busy_until - sim_now());
   // else: asleep until its wire_wake (the method's static sensitivity)
 }
 
@@ -217,7 +217,7 @@ bool Link::start_packet(int w) {
     if (own.in_flight.active) {
       const InFlight& packet = own.in_flight;
       const sc_time end = packet.start + (packet.data ? data_packet_ : ack_packet_);
-      if (end > sc_time_stamp()) {
+      if (end > sim_now()) {
         carry(w, WirePacket::in_flight, packet.start, end - packet.start);
         return true;
       }
@@ -244,12 +244,12 @@ bool Link::start_packet(int w) {
 bool Link::start_at_once(int w) {
   Direction& own = dir_[w];
   if ((own.carrying == WirePacket::data_settled || own.carrying == WirePacket::ack_settled) &&
-      sc_time_stamp() >= own.wire_busy_until)
+      sim_now() >= own.wire_busy_until)
     own.carrying = WirePacket::none;  // it has ended: nothing was left to do at its end
   if (faulted_ || deadline_waits_ > 0 || own.carrying != WirePacket::none || own.in_flight.active ||
       dir_[1 - w].in_flight.active)
     return false;
-  if (start_packet(w)) own.wire_wake.notify(own.wire_busy_until - sc_time_stamp());
+  if (start_packet(w)) own.wire_wake.notify(own.wire_busy_until - sim_now());
   return true;
 }
 
@@ -264,7 +264,7 @@ void Link::carry(int w, WirePacket packet, const sc_time& start, const sc_time& 
 // data_end_settled_now.
 bool Link::send_data_packet(int di) {
   Direction& d = dir_[di];
-  const sc_time start = sc_time_stamp();
+  const sc_time start = sim_now();
   settle_arrival(di);
   if (d.sent == 0) {  // the first byte of a message: both ends are now communicating
     d.receiving = true;
@@ -328,7 +328,7 @@ void Link::finish_data_packet(int di, const sc_time& start) {
 // sleeps on; a wire_wake before the end finds it busy until then.
 bool Link::send_ack_packet(int w) {
   --dir_[w].acks_pending;
-  const sc_time start = sc_time_stamp();
+  const sc_time start = sim_now();
   if (!ack_end_settled_now(w)) {
     carry(w, WirePacket::ack, start, ack_packet_);
     return true;
@@ -416,7 +416,7 @@ void Link::on_byte_arrived(int di) {
   Direction& d = dir_[di];
   settle_arrival(di);
   ++d.received;
-  d.dma_received.add(1, sc_time_stamp());
+  d.dma_received.add(1, sim_now());
   // A T414 acknowledges after the whole packet: a byte taken by a waiting input is owed its
   // acknowledge even if that input completes (and disarms) before the acknowledge goes out.
   if (d.armed && config_.protocol == LinkProtocol::t414) d.accepted_before_detect = true;
@@ -498,7 +498,7 @@ bool Link::closed_form_allowed(int di) const {
   const Direction& other = dir_[1 - di];
   return other.queue.empty() && !other.closed_form.active && !other.in_flight.active &&
          !dir_[di].in_flight.active && other.acks_pending == 0 && dir_[di].acks_pending == 0 &&
-         sc_time_stamp() >= other.wire_busy_until;
+         sim_now() >= other.wire_busy_until;
 }
 
 void Link::start_closed_form(int di) {
@@ -506,7 +506,7 @@ void Link::start_closed_form(int di) {
   ClosedForm& cf = d.closed_form;
   cf.active = true;
   cf.bytes = d.queue.front().bytes;
-  cf.start = sc_time_stamp();
+  cf.start = sim_now();
   cf.armed = d.armed;
   cf.armed_at = cf.start;
   cf.sender_done = cf.delivered = false;
@@ -555,7 +555,7 @@ void Link::on_closed_form(int di) {
   Direction& d = dir_[di];
   ClosedForm& cf = d.closed_form;
   if (!cf.active || !cf.armed) return;
-  const sc_time now = sc_time_stamp();
+  const sc_time now = sim_now();
   if (fidelity_ == LinkFidelity::packet) {  // a run: handed to the packet level at its last byte
     const sc_time last = byte_start(cf, cf.bytes);
     if (now >= last) return hand_over(di);
@@ -623,7 +623,12 @@ std::int64_t Link::bytes_done_by(const ClosedForm& cf, const sc_time& now) const
     return s + data_packet_ <= now && s + detect_delay_ <= now &&
            ack_start(cf, k) + ack_packet_ + process_delay_ <= now;
   };
-  std::int64_t lo = 0, hi = cf.bytes;  // done(lo) (0: trivially); the answer is in [lo, hi]
+  // done(k) implies done(j) for every j < k. A run is handed over at its last byte (at packet
+  // fidelity, most of the time): the answer is then one of the last few, so look there first.
+  std::int64_t hi = cf.bytes;
+  for (const std::int64_t last = std::max<std::int64_t>(0, hi - 3); hi > last; --hi)
+    if (done(hi)) return hi;
+  std::int64_t lo = 0;  // done(lo) (0: trivially); the answer is in [lo, hi]
   while (lo < hi) {
     const std::int64_t mid = lo + (hi - lo + 1) / 2;
     if (done(mid))
@@ -644,7 +649,7 @@ void Link::hand_over(int di) {
   cf.active = false;
   cf.milestone.cancel();
   ++handovers_;
-  const sc_time now = sc_time_stamp();
+  const sc_time now = sim_now();
   const std::int64_t bytes = cf.bytes;
   const bool sender_side = !cf.sender_done;  // else the acknowledges are all in and recorded
   // Bytes whose packets, acknowledges and processing are all over by now leave nothing pending;
@@ -772,7 +777,7 @@ bool Link::deaf_at(int di) {
 void Link::apply_byte_fault(int di) {
   Direction& d = dir_[di];
   ByteFault& f = d.byte_fault;
-  if (!f.armed || sc_time_stamp() < f.at) return;
+  if (!f.armed || sim_now() < f.at) return;
   f.armed = false;
   const std::string what = "byte " + std::to_string(d.sent) + " of " +
                            std::to_string(d.incoming.bytes) + " of message '" + d.incoming.label +
@@ -792,12 +797,12 @@ bool Link::transmit(int from, Message message, const sc_time& deadline) {
   const std::int64_t ticket = submit(from, std::move(message));
   ++deadline_waits_;
   while (d.completed < ticket) {
-    if (sc_time_stamp() >= deadline) {
+    if (sim_now() >= deadline) {
       reset_output(from);
       --deadline_waits_;
       return false;
     }
-    sc_core::wait(deadline - sc_time_stamp(), d.sent_event);
+    sc_core::wait(deadline - sim_now(), d.sent_event);
   }
   --deadline_waits_;
   return true;
@@ -809,12 +814,12 @@ std::optional<Message> Link::receive(int to, const sc_time& deadline) {
   ++deadline_waits_;
   arm_input(di);
   while (d.delivered.empty()) {
-    if (sc_time_stamp() >= deadline) {
+    if (sim_now() >= deadline) {
       reset_input(di);
       --deadline_waits_;
       return std::nullopt;
     }
-    sc_core::wait(deadline - sc_time_stamp(), d.delivered_event);
+    sc_core::wait(deadline - sim_now(), d.delivered_event);
   }
   --deadline_waits_;
   Message m = std::move(d.delivered.front());

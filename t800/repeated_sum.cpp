@@ -29,7 +29,11 @@ int binade(double x) {
 // that cross into the next binade are done one by one.
 double add_repeatedly(double sum, double term, std::int64_t times) {
   while (times > 0) {
-    if (times < kShortRun || sum <= 0 || !std::isnormal(sum) || !(term > 0)) {
+    if (times < kShortRun) {  // what is left, as the loop it stands for
+      for (; times > 0; --times) sum += term;
+      return sum;
+    }
+    if (sum <= 0 || !std::isnormal(sum) || !(term > 0)) {
       sum += term;
       --times;
       continue;
