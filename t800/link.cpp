@@ -11,7 +11,6 @@ namespace t800 {
 
 using sc_core::SC_NS;
 using sc_core::sc_time;
-
 using sc_core::SC_ZERO_TIME;
 
 namespace {
