@@ -191,7 +191,7 @@ class Farm {
           if (!exchange(branch, w, std::move(order))) failed_.push_back(w);
           return;
         }
-        branch.out(to_[w], order);
+        branch.out(to_[w], std::move(order));
         if (!on_demand())
           collect(branch, w);
         else if (options_.alt_master)
@@ -326,7 +326,7 @@ class Farm {
     } else {
       return;
     }
-    p.out(to_[w], o);
+    p.out(to_[w], std::move(o));
   }
 
   void take(Process& p, std::size_t w, const Reply& r) {
@@ -382,16 +382,16 @@ class Farm {
             const INT task = computer.in(queue);
             if (task == kEndOfRound) break;
             Reply r{task, {run_task(computer, task, shared)}};
-            computer.out(reply_to, r);
+            computer.out(reply_to, std::move(r));
           }
           if (buffered) computer.out(reply_to, Reply{kEndOfRound, {}});
         }};
     if (buffered)
       parts.push_back([this, w](Process& sender) {
         for (;;) {
-          const Reply r = sender.in(outbox_[w]);
+          Reply r = sender.in(outbox_[w]);
           if (r.task == kEndOfRound) return;
-          sender.out(from_[w], r);
+          sender.out(from_[w], std::move(r));
         }
       });
     p.par(parts);

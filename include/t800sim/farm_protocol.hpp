@@ -126,7 +126,7 @@ struct protocol<FarmOrders<Shared>> {
     return protocol<Shared>::bytes(o.shared) + list + check;
   }
   static std::string name() { return "FARM.ORDER(" + protocol<Shared>::name() + ")"; }
-  static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
+  static void send(detail::Wire& w, value_type v) { detail::send_one(w, bytes(v), std::move(v)); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 };
 
@@ -142,7 +142,7 @@ struct protocol<FarmReplies<Result>> {
     return n;
   }
   static std::string name() { return "FARM.REPLY(" + protocol<Result>::name() + ")"; }
-  static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
+  static void send(detail::Wire& w, value_type v) { detail::send_one(w, bytes(v), std::move(v)); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 };
 

@@ -70,15 +70,16 @@ class Process {
 
   // c ! v: returns when the value has been taken (a protocol's items one communication each).
   // Traces and fault reports name the message by its channel, or by `label` when one is given
-  // (nothing but those reads it).
+  // (nothing but those reads it). The value travels to the receiver as it is: pass it with
+  // std::move, or as a temporary, and its storage goes along instead of a copy.
   template <class P>
-  void out(const Out<P>& c, const value_of<P>& v, const std::string& label = {}) {
+  void out(const Out<P>& c, value_of<P> v, const std::string& label = {}) {
     auto wire = open(c.slot(), true, -1, label);
-    protocol<P>::send(wire, v);
+    protocol<P>::send(wire, std::move(v));
   }
   template <class P>
-  void out(const Chan<P>& c, const value_of<P>& v) {
-    out(c.out(), v);
+  void out(const Chan<P>& c, value_of<P> v) {
+    out(c.out(), std::move(v));
   }
   // c ? v
   template <class P>
@@ -99,10 +100,10 @@ class Process {
   // routed channel the output fails only if the first hop does not take it. A protocol's items
   // each have the same deadline; after one fails the rest are not sent.
   template <class P>
-  bool out_or_fail(const Out<P>& c, const value_of<P>& v, double deadline_us,
+  bool out_or_fail(const Out<P>& c, value_of<P> v, double deadline_us,
                    const std::string& label = {}) {
     auto wire = open(c.slot(), true, deadline_us, label);
-    protocol<P>::send(wire, v);
+    protocol<P>::send(wire, std::move(v));
     return !wire.failed();
   }
   template <class P>

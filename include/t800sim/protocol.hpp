@@ -95,9 +95,16 @@ class Wire {
 template <class T>
 T take(Wire& w) {
   std::any value = w.receive();
-  if (!value.has_value() && w.failed()) return T{};  // discarded by in_or_fail
-  if (const T* v = std::any_cast<T>(&value)) return *v;
+  if (!value.has_value() && w.failed()) return T{};           // discarded by in_or_fail
+  if (T* v = std::any_cast<T>(&value)) return std::move(*v);  // the wire's copy is ours
   throw std::logic_error("a channel delivered a value of another protocol");
+}
+
+// One communication of `bytes` carrying v, moved onto the wire. The byte count is taken first: the
+// wire's argument may be built from v before another argument is evaluated.
+template <class T>
+void send_one(Wire& w, std::int64_t bytes, T&& v) {
+  w.send(bytes, std::any(std::forward<T>(v)));
 }
 
 template <class T>
@@ -145,7 +152,7 @@ struct protocol<T, std::enable_if_t<detail::is_primitive<T>>> {
     detail::flip_byte(v, byte, mask);
     return true;
   }
-  static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
+  static void send(detail::Wire& w, value_type v) { detail::send_one(w, bytes(v), std::move(v)); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 };
 
@@ -176,7 +183,7 @@ struct protocol<Array<T, N>> {
   static bool flip(value_type& v, std::int64_t byte, std::uint8_t mask) {
     return detail::flip_element<T>(v, byte, mask);
   }
-  static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
+  static void send(detail::Wire& w, value_type v) { detail::send_one(w, bytes(v), std::move(v)); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 };
 
@@ -194,7 +201,7 @@ struct protocol<Block<T>> {
   static bool flip(value_type& v, std::int64_t byte, std::uint8_t mask) {
     return detail::flip_element<T>(v, byte, mask);
   }
-  static void send(detail::Wire& w, const value_type& v) { w.send(bytes(v), v); }
+  static void send(detail::Wire& w, value_type v) { detail::send_one(w, bytes(v), std::move(v)); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 };
 
@@ -211,9 +218,9 @@ struct protocol<Counted<Count, T>> {
     return n;
   }
   static std::string name() { return protocol<Count>::name() + "::[]" + protocol<T>::name(); }
-  static void send(detail::Wire& w, const value_type& v) {
+  static void send(detail::Wire& w, value_type v) {
     protocol<Count>::send(w, Count(v.size()));
-    if (!v.empty()) w.send(bytes(v) - protocol<Count>::bytes(Count(0)), v);
+    if (!v.empty()) detail::send_one(w, bytes(v) - protocol<Count>::bytes(Count(0)), std::move(v));
   }
   static value_type receive(detail::Wire& w) {
     const auto count = protocol<Count>::receive(w);
@@ -238,8 +245,8 @@ struct protocol<Sequential<Items...>> {
     ((s += (s.empty() ? "" : "; ") + protocol<Items>::name()), ...);
     return s;
   }
-  static void send(detail::Wire& w, const value_type& v) {
-    std::apply([&w](const auto&... x) { (protocol<Items>::send(w, x), ...); }, v);
+  static void send(detail::Wire& w, value_type v) {
+    std::apply([&w](auto&... x) { (protocol<Items>::send(w, std::move(x)), ...); }, v);
   }
   // Braced initialisation: the items are received in order.
   static value_type receive(detail::Wire& w) { return value_type{protocol<Items>::receive(w)...}; }
@@ -254,11 +261,11 @@ bool flip_whole(std::any& value, std::int64_t byte, std::uint8_t mask) {
   return v && byte >= 0 && Protocol::flip(*v, byte, mask);
 }
 template <class Protocol>
-void send_whole(Wire& w, const typename Protocol::value_type& v) {
+void send_whole(Wire& w, typename Protocol::value_type v) {
   static const bool registered =
       (register_value_bytes(typeid(typename Protocol::value_type), &flip_whole<Protocol>), true);
   (void)registered;
-  w.send(Protocol::bytes(v), v);
+  send_one(w, Protocol::bytes(v), std::move(v));
 }
 }  // namespace detail
 
@@ -294,7 +301,7 @@ struct protocol<Packed<Items...>> {
         v);
     return changed;
   }
-  static void send(detail::Wire& w, const value_type& v) { detail::send_whole<protocol>(w, v); }
+  static void send(detail::Wire& w, value_type v) { detail::send_whole<protocol>(w, std::move(v)); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 };
 
@@ -309,8 +316,8 @@ struct protocol<Case<Items...>> {
     const std::string items = protocol<Sequential<Items...>>::name();
     return items.empty() ? "tag" : items;
   }
-  static void send(detail::Wire& w, const value_type& c) {
-    protocol<Sequential<Items...>>::send(w, c.items);
+  static void send(detail::Wire& w, value_type c) {
+    protocol<Sequential<Items...>>::send(w, std::move(c.items));
   }
   static value_type receive(detail::Wire& w) {
     return {protocol<Sequential<Items...>>::receive(w)};
@@ -327,9 +334,9 @@ struct protocol<Variant<Cases...>> {
                    [](const auto& c) { return protocol<std::decay_t<decltype(c)>>::bytes(c); }, v);
   }
   static std::string name() { return case_names(std::index_sequence_for<Cases...>{}); }
-  static void send(detail::Wire& w, const value_type& v) {
+  static void send(detail::Wire& w, value_type v) {
     protocol<BYTE>::send(w, BYTE(v.index()));
-    std::visit([&w](const auto& c) { protocol<std::decay_t<decltype(c)>>::send(w, c); }, v);
+    std::visit([&w](auto& c) { protocol<std::decay_t<decltype(c)>>::send(w, std::move(c)); }, v);
   }
   static value_type receive(detail::Wire& w) {
     const std::size_t tag = protocol<BYTE>::receive(w);
@@ -382,7 +389,7 @@ struct protocol<Untagged<Alternatives...>> {
   static bool flip(value_type& v, std::int64_t byte, std::uint8_t mask) {
     return flip_of(v, byte, mask, std::index_sequence_for<Alternatives...>{});
   }
-  static void send(detail::Wire& w, const value_type& v) { detail::send_whole<protocol>(w, v); }
+  static void send(detail::Wire& w, value_type v) { detail::send_whole<protocol>(w, std::move(v)); }
   static value_type receive(detail::Wire& w) { return detail::take<value_type>(w); }
 
  private:

@@ -50,8 +50,8 @@ struct Context {
   // naming it in traces and fault reports.
   using Packet = typename Messages<T>::Packet;
   using PacketValue = typename Messages<T>::PacketValue;
-  static void send(Process& p, Slot c, const PacketValue& v, const std::string& label) {
-    p.out(t800sim::Out<Packet>(c), v, label);
+  static void send(Process& p, Slot c, PacketValue v, const std::string& label) {
+    p.out(t800sim::Out<Packet>(c), std::move(v), label);
   }
   static PacketValue receive(Process& p, Slot c) { return p.in(t800sim::In<Packet>(c)); }
 
