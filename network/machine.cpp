@@ -343,10 +343,13 @@ std::vector<BlockedProcess> Machine::run() {
   for (auto& t : transputers_) t->activity().close(t800::sim_now());
 
   std::vector<BlockedProcess> blocked;
-  for (const Process* p : processes_in_start_order())
-    if (limit_ == Limit::none && !p->ended() && !p->daemon())
-      blocked.push_back({p->name(), node_name(p->node()), p->status(), waits_for(*this, *p)});
-  if (!blocked.empty()) wait_cycle_ = network::wait_cycle(*this);
+  if (limit_ == Limit::none) {
+    const WaitGraph waits(*this);
+    for (const Process* p : waits.in_start_order())
+      if (!p->ended() && !p->daemon())
+        blocked.push_back({p->name(), node_name(p->node()), p->status(), waits.waits_for(*p)});
+    if (!blocked.empty()) wait_cycle_ = waits.cycle();
+  }
   if (tears_down()) end_threads();
   return blocked;
 }
