@@ -161,4 +161,52 @@ TEST(Protocol, AValueOfAnotherProtocolIsAnError) {
   EXPECT_THROW(protocol<INT>::receive(w), std::logic_error);
 }
 
+// A value passed as a temporary or with std::move travels as it is: the receiver gets the sender's
+// storage, not a copy, and the bytes on the wire are still the value's (counted before it moved).
+class HandingWire : public RecordingWire {
+ public:
+  std::any receive() override { return std::move(values.at(next++)); }
+};
+
+TEST(Protocol, AMovedValueArrivesWithItsOwnStorageAndItsBytes) {
+  std::vector<float> block{1, 2, 3, 4, 5};
+  const float* storage = block.data();
+  {
+    HandingWire w;
+    protocol<Block<REAL32>>::send(w, std::move(block));
+    const std::vector<float> got = protocol<Block<REAL32>>::receive(w);
+    EXPECT_EQ(w.sizes, std::vector<std::int64_t>{20});
+    EXPECT_EQ(got.data(), storage);
+    block = got;
+    storage = block.data();
+  }
+  {
+    using P = Packed<INT, Block<REAL32>>;
+    HandingWire w;
+    protocol<P>::send(w, value_of<P>{7, std::move(block)});
+    const value_of<P> got = protocol<P>::receive(w);
+    EXPECT_EQ(w.sizes, std::vector<std::int64_t>{24});
+    EXPECT_EQ(std::get<1>(got).data(), storage);
+    block = std::get<1>(got);
+    storage = block.data();
+  }
+  {
+    using P = Sequential<INT, Counted<INT, REAL32>>;
+    HandingWire w;
+    protocol<P>::send(w, value_of<P>{7, std::move(block)});
+    const value_of<P> got = protocol<P>::receive(w);
+    EXPECT_EQ(w.sizes, (std::vector<std::int64_t>{4, 4, 20}));
+    EXPECT_EQ(std::get<1>(got).data(), storage);
+  }
+}
+
+TEST(Protocol, AValueSentFromAVariableIsCopiedAndTheVariableKept) {
+  const std::vector<float> kept{1, 2, 3};
+  HandingWire w;
+  protocol<Block<REAL32>>::send(w, kept);
+  const std::vector<float> got = protocol<Block<REAL32>>::receive(w);
+  EXPECT_EQ(got, kept);
+  EXPECT_NE(got.data(), kept.data());
+}
+
 }  // namespace
