@@ -11,7 +11,9 @@ constexpr Encoding D = Encoding::direct;
 constexpr Encoding O = Encoding::operate;
 constexpr Encoding F = Encoding::fpu_entry;
 
-// Codes from the INMOS instruction tables (T800 datasheet; pahihu/t4 Notebook.txt), in Op order.
+// Codes from the INMOS instruction tables (T800 datasheet; pahihu/t4 Notebook.txt; the T805's
+// additions from the T805 datasheet, as the occam compiler's instruction codes list them), in Op
+// order.
 constexpr std::array<OpInfo, kOpCount> kTable{{
     {Op::j, "j", D, 0x0},
     {Op::ldlp, "ldlp", D, 0x1},
@@ -99,6 +101,39 @@ constexpr std::array<OpInfo, kOpCount> kTable{{
     {Op::rem, "rem", O, 0x1F},
     {Op::taltwt, "taltwt", O, 0x51},
     {Op::fmul, "fmul", O, 0x72},
+    {Op::stlb, "stlb", O, 0x17},
+    {Op::sthf, "sthf", O, 0x18},
+    {Op::stlf, "stlf", O, 0x1C},
+    {Op::sthb, "sthb", O, 0x50},
+    {Op::xdble, "xdble", O, 0x1D},
+    {Op::ldpri, "ldpri", O, 0x1E},
+    {Op::testpranal, "testpranal", O, 0x2A},
+    {Op::savel, "savel", O, 0x3D},
+    {Op::saveh, "saveh", O, 0x3E},
+    {Op::sttimer, "sttimer", O, 0x54},
+    {Op::clrhalterr, "clrhalterr", O, 0x57},
+    {Op::sethalterr, "sethalterr", O, 0x58},
+    {Op::testhalterr, "testhalterr", O, 0x59},
+    {Op::move2dinit, "move2dinit", O, 0x5B},
+    {Op::move2dall, "move2dall", O, 0x5C},
+    {Op::move2dnonzero, "move2dnonzero", O, 0x5D},
+    {Op::move2dzero, "move2dzero", O, 0x5E},
+    {Op::crcword, "crcword", O, 0x74},
+    {Op::crcbyte, "crcbyte", O, 0x75},
+    {Op::bitcnt, "bitcnt", O, 0x76},
+    {Op::bitrevword, "bitrevword", O, 0x77},
+    {Op::bitrevnbits, "bitrevnbits", O, 0x78},
+    {Op::pop, "pop", O, 0x79},
+    {Op::timerdisableh, "timerdisableh", O, 0x7A},
+    {Op::timerdisablel, "timerdisablel", O, 0x7B},
+    {Op::timerenableh, "timerenableh", O, 0x7C},
+    {Op::timerenablel, "timerenablel", O, 0x7D},
+    {Op::ldmemstartval, "ldmemstartval", O, 0x7E},
+    {Op::break_, "break", O, 0xB1},
+    {Op::clrj0break, "clrj0break", O, 0xB2},
+    {Op::setj0break, "setj0break", O, 0xB3},
+    {Op::testj0break, "testj0break", O, 0xB4},
+    {Op::lddevid, "lddevid", O, 0x17C},
     {Op::unpacksn, "unpacksn", O, 0x63},
     {Op::postnormsn, "postnormsn", O, 0x6C},
     {Op::roundsn, "roundsn", O, 0x6D},

@@ -131,12 +131,47 @@ const std::initializer_list<Row> kInteger = {
     {Op::rem, I, 37},
     {Op::taltwt, I, 15, 0, 0, 48, 0, 4},  // 15 time past, 48 in the future
     {Op::fmul, I, 35},                    // fractional multiply, rounding (38 without)
+    // Processor initialisation and error handling (NB, "Processor initialisation operation codes").
+    {Op::stlb, I, 1},
+    {Op::sthf, I, 1},
+    {Op::stlf, I, 1},
+    {Op::sthb, I, 1},
+    {Op::xdble, I, 2},
+    {Op::ldpri, I, 1},
+    {Op::testpranal, I, 2},
+    {Op::savel, I, 4, 0, 0, 0, 0, 2},  // stores the two queue pointers
+    {Op::saveh, I, 4, 0, 0, 0, 0, 2},
+    {Op::sttimer, I, 1},
+    {Op::clrhalterr, I, 1},
+    {Op::sethalterr, I, 1},
+    {Op::testhalterr, I, 2},
 };
 
 // Instructions the T800 and T805 have and the T414 has not (besides the FPU's).
 const std::initializer_list<Row> kT800Integer = {
     {Op::dup, I, 1},
     {Op::wsubdb, I, 3},
+    // 2D block moves: (2p + 23) cycles per row, p the row's words; the timing rule multiplies the
+    // figure by the rows (TimedStep::rows). Each word is read and written.
+    {Op::move2dinit, I, 8},
+    {Op::move2dall, I, 23, 0, 2, 0, 0, 0, 2},
+    {Op::move2dnonzero, I, 23, 0, 2, 0, 0, 0, 2},
+    {Op::move2dzero, I, 23, 0, 2, 0, 0, 0, 2},
+    {Op::crcword, I, 35},
+    {Op::crcbyte, I, 11},
+    {Op::bitcnt, I, 2, 0, 1},  // b + 2, b the bit number of A's highest set bit
+    {Op::bitrevword, I, 36},
+    {Op::bitrevnbits, I, 4, 0, 1},  // n + 4, n bits reversed
+};
+
+// The T805's additions (T805DS): the datasheet gives no cycles for them in the tables this
+// project has; one cycle each is the model's assumption (U, docs/t800-timing.md), except break,
+// timed as the j it replaces when its break flag is clear.
+const std::initializer_list<Row> kT805Additions = {
+    {Op::pop, I, 1},          {Op::timerdisableh, I, 1}, {Op::timerdisablel, I, 1},
+    {Op::timerenableh, I, 1}, {Op::timerenablel, I, 1},  {Op::ldmemstartval, I, 1},
+    {Op::break_, I, 3},       {Op::clrj0break, I, 1},    {Op::setj0break, I, 1},
+    {Op::testj0break, I, 2},  {Op::lddevid, I, 1},
 };
 
 // The T414's floating-point support instructions (T414 datasheet; Notebook.txt).
@@ -231,7 +266,7 @@ const InstructionTimingTable& t800_timing() {
 // 40 in the T800's table.
 const InstructionTimingTable& t805_timing() {
   static const InstructionTimingTable table = [] {
-    InstructionTimingTable t = make("T805", {kInteger, kT800Integer, kFpu});
+    InstructionTimingTable t = make("T805", {kInteger, kT800Integer, kFpu, kT805Additions});
     fill(t, {{Op::mul, I, 38}});
     return t;
   }();

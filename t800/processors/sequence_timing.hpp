@@ -1,4 +1,5 @@
-// Times a straight-line instruction sequence on one processor, instruction by instruction: the
+// Times a straight-line instruction sequence on one processor, instruction by instruction (through
+// the one timing rule, timing_stepper.hpp, which the instruction-set simulator shares): the
 // integer unit (IU) and the FPU run concurrently by the rules of instruction_timing.hpp's Unit, and
 // every instruction fetch and data access is priced by where it lives (docs/t800-timing.md,
 // "FPU overlap" and "Memory").
@@ -16,6 +17,7 @@
 
 #include "t800/isa/instruction.hpp"
 #include "t800/processors/processor_model.hpp"
+#include "t800/processors/timing_stepper.hpp"
 
 namespace t800 {
 
@@ -29,15 +31,6 @@ struct MemoryView {
 
   bool external(const isa::MemoryRef& ref) const;
   bool operator==(const MemoryView& o) const;
-};
-
-// When one instruction ran, for listings (cycles from the start of its sequence).
-struct InstructionTime {
-  std::int64_t start = 0;    // it began (after waiting for the FPU, its code or the bus)
-  std::int64_t iu_end = 0;   // the IU may issue the next instruction
-  std::int64_t fpu_end = 0;  // the FPU is free again (= start when the FPU is not involved)
-  int waited = 0;            // cycles it waited for the FPU, its code or the bus
-  int memory_extra = 0;      // cycles its external data accesses added
 };
 
 struct SequenceTime {

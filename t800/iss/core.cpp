@@ -1,0 +1,195 @@
+#include "t800/iss/core.hpp"
+
+#include <fmt/format.h>
+
+#include "t800/iss/integer_arithmetic.hpp"
+#include "t800/timing_table.hpp"
+
+namespace t800::iss {
+
+using isa::Op;
+
+Core::Core(const CoreConfig& config)
+    : processor_(*config.processor),
+      memory_(config.processor->on_chip_bytes, config.installed_bytes, config.policy),
+      decoded_(memory_),
+      stepper_(*config.processor->timing,
+               config.processor->external_access_cycles + config.wait_states, false),
+      timeslice_cycles_(
+          std::int64_t(timing::kTimesliceUs * 1000.0 / config.processor->cycle_ns + 0.5)),
+      interrupt_latency_(timing::kInterruptLatencyTypical) {
+  // Reset: the link and event channels, the timer queues and the save area hold NotProcess.p (the
+  // primary bootstrap writes them again, t800-iss.md).
+  for (Word a = kLinkOutput0; a <= kTimerQueueLow; a += 4) memory_.set_word(a, kNotProcess);
+  memory_.set_word(kSaveWdesc, kNotProcess);
+}
+
+void Core::start_process(Word iptr, Word wptr, int priority) {
+  memory_.set_word(slot_of(wptr, kSlotIptr), iptr);
+  schedule(wptr | Word(priority));
+  if (!running_) next_process();
+}
+
+void Core::start_boot_program(Word length, int boot_link) {
+  // The workspace starts just above the loaded code, word aligned (t4 main.c does the same).
+  const Word code_end = mem_start() + length;
+  const Word wptr = (code_end + 3) & ~3u;
+  r_.wptr = wptr;
+  r_.priority = kLow;
+  r_.iptr = mem_start();
+  r_.c = kLinkInput0 + Word(4 * boot_link);
+  r_.b = r_.a = 0;
+  running_ = true;
+  slice_start_ = cycle();
+  stepper_.restart_fetch();
+}
+
+StopReason Core::run(std::int64_t until, std::int64_t max_instructions) {
+  const std::int64_t last = instructions_ + max_instructions;
+  while (!halt_) {
+    if (cycle() >= next_timer_) fire_timers();
+    if (!running_) {
+      next_process();
+      if (!running_) return StopReason::idle;
+    }
+    if (cycle() >= until) return StopReason::running;
+    if (instructions_ >= last) return StopReason::limit;
+    step(decoded_.at(r_.iptr));
+  }
+  return StopReason::halted;
+}
+
+void Core::step(const Decoded& d) {
+  const Word at = r_.iptr;
+  TimedStep t;
+  t.op = d.op;
+  t.prefix_cycles = d.prefix_cycles;
+  t.bytes = d.bytes;
+  t.address = at;
+  stepper_.set_code_external(memory_.external(at));
+  r_.iptr = at + d.bytes;
+  if (!d.defined) {
+    r_.iptr = at;
+    undefined(d, d.bytes > 16 ? "a prefix chain of more than 16 bytes"
+                              : fmt::format("undefined operation #{:X}", d.operand));
+    return;
+  }
+  if (!processor_.timing->has(d.op)) {
+    r_.iptr = at;
+    undefined(d, fmt::format("{} is not an instruction of the {}", isa::mnemonic(d.op),
+                             processor_.timing->family));
+    return;
+  }
+  try {
+    execute(d, t);
+  } catch (const MemoryFault& fault) {
+    r_.iptr = at;
+    halt(fmt::format("memory fault: {} (strict addressing)", fault.what()), at);
+    return;
+  }
+  ++instructions_;
+  stepper_.step(t);
+  if (r_.error && r_.halt_on_error && !halt_) halt("HaltOnError: Error set by " + error_by_, at);
+}
+
+void Core::undefined(const Decoded&, const std::string& what) {
+  halt(what, r_.iptr);
+}
+
+void Core::halt(const std::string& reason, Word iptr) {
+  HaltReport h;
+  h.reason = reason;
+  h.iptr = iptr;
+  const Decoded d = decode(memory_, iptr);
+  for (int k = 0; k < std::max<int>(1, d.bytes); ++k)
+    h.bytes.push_back(memory_.byte(iptr + Word(k)));
+  h.registers = r_;
+  h.registers.iptr = iptr;
+  halt_ = h;
+  running_ = false;
+}
+
+void Core::set_error(const char* by) {
+  r_.error = true;
+  error_by_ = by;
+}
+
+void Core::execute(const Decoded& d, TimedStep& t) {
+  const Word n = Word(d.operand);
+  switch (d.op) {
+    case Op::j:
+      r_.iptr += n;
+      stepper_.restart_fetch();
+      if (n == 0 && j0_break_) {
+        halt("break: j 0 with the T805's j0 break enabled", r_.iptr);
+        return;
+      }
+      timeslice_point();
+      return;
+    case Op::ldlp:
+      push(r_.wptr + 4 * n);
+      return;
+    case Op::ldnl:
+      data_at(t, r_.a + 4 * n);
+      r_.a = memory_.word(r_.a + 4 * n);
+      return;
+    case Op::ldc:
+      push(n);
+      return;
+    case Op::ldnlp:
+      r_.a += 4 * n;
+      return;
+    case Op::ldl:
+      data_at(t, r_.wptr + 4 * n);
+      push(ws(d.operand));
+      return;
+    case Op::adc: {
+      const auto sum = checked_add(r_.a, n);
+      r_.a = sum.value;
+      if (sum.overflow) set_error("adc");
+      return;
+    }
+    case Op::call: {
+      const Word back = r_.iptr;
+      r_.wptr -= 16;
+      data_at(t, r_.wptr);
+      memory_.set_word(r_.wptr, back);
+      memory_.set_word(r_.wptr + 4, r_.a);
+      memory_.set_word(r_.wptr + 8, r_.b);
+      memory_.set_word(r_.wptr + 12, r_.c);
+      r_.a = back;
+      r_.iptr += n;
+      stepper_.restart_fetch();
+      return;
+    }
+    case Op::cj:
+      if (r_.a == 0) {
+        r_.iptr += n;
+        t.param = 1;  // taken
+        stepper_.restart_fetch();
+      } else {
+        pop();
+      }
+      return;
+    case Op::ajw:
+      r_.wptr += 4 * n;
+      return;
+    case Op::eqc:
+      r_.a = r_.a == n ? kTrue : kFalse;
+      return;
+    case Op::stl:
+      data_at(t, r_.wptr + 4 * n);
+      set_ws(d.operand, pop());
+      return;
+    case Op::stnl:
+      data_at(t, r_.a + 4 * n);
+      memory_.set_word(r_.a + 4 * n, r_.b);
+      r_.a = r_.c;
+      return;
+    default:
+      if (isa::info(d.op).encoding == isa::Encoding::direct) return;  // pfix/nfix never get here
+      operate(d, t);
+  }
+}
+
+}  // namespace t800::iss

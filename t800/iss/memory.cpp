@@ -1,0 +1,48 @@
+#include "t800/iss/memory.hpp"
+
+#include <fmt/format.h>
+
+namespace t800::iss {
+
+Memory::Memory(std::int64_t on_chip_bytes, std::int64_t installed_bytes, AddressPolicy policy)
+    : policy_(policy) {
+  if (installed_bytes < on_chip_bytes || installed_bytes > (std::int64_t(1) << 31) ||
+      on_chip_bytes <= 0)
+    throw std::invalid_argument(fmt::format(
+        "memory: {} bytes installed with {} on chip: the installed memory must hold the on-chip "
+        "RAM and be at most 2 GiB (half the address space, from MostNeg)",
+        installed_bytes, on_chip_bytes));
+  size_ = std::uint32_t(installed_bytes);
+  on_chip_ = std::uint32_t(on_chip_bytes);
+  power_of_two_ = (size_ & (size_ - 1)) == 0;
+  bytes_.assign(size_, 0);
+  code_lines_.assign((size_ >> kLineShift) + 1, 0);
+}
+
+std::uint32_t Memory::wrap(Word address) const {
+  if (policy_ == AddressPolicy::strict)
+    throw MemoryFault(address, fmt::format("address #{:08X} is outside the installed memory "
+                                           "(#{:08X} to #{:08X})",
+                                           address, kMostNeg, kMostNeg + size_ - 1));
+  const std::uint32_t o = address - kMostNeg;
+  return power_of_two_ ? (o & (size_ - 1)) : (o % size_);
+}
+
+void Memory::written_code(std::uint32_t offset) {
+  code_lines_[offset >> kLineShift] = 0;
+  if (code_written_) code_written_(offset & ~((1u << kLineShift) - 1));
+}
+
+void Memory::copy(Word to, Word from, Word count) {
+  for (Word k = 0; k < count; ++k) set_byte(to + k, byte(from + k));
+}
+
+void Memory::read(Word address, std::uint8_t* out, std::size_t count) const {
+  for (std::size_t k = 0; k < count; ++k) out[k] = byte(address + Word(k));
+}
+
+void Memory::write(Word address, const std::uint8_t* in, std::size_t count) {
+  for (std::size_t k = 0; k < count; ++k) set_byte(address + Word(k), in[k]);
+}
+
+}  // namespace t800::iss

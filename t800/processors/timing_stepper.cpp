@@ -1,0 +1,124 @@
+#include "t800/processors/timing_stepper.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace t800 {
+
+using isa::Encoding;
+
+int prefix_cycles(isa::Op op, std::int64_t operand) {
+  const isa::OpInfo& info = isa::info(op);
+  switch (info.encoding) {
+    case Encoding::direct:
+      return isa::prefix_bytes(operand);
+    case Encoding::operate:
+      return isa::prefix_bytes(info.code);
+    case Encoding::fpu_entry:
+      return 1 + isa::prefix_bytes(info.code) + isa::prefix_bytes(isa::info(isa::Op::fpentry).code);
+  }
+  return 0;
+}
+
+std::int64_t TimingStepper::Bus::access(std::int64_t at, int words) {
+  for (int k = 0; k < words; ++k) {
+    free_at = std::max(at, free_at) + access_cycles;
+    at = free_at;
+  }
+  return at;
+}
+
+std::int64_t TimingStepper::Fetcher::ready(std::int64_t begin, std::int64_t end, std::int64_t at) {
+  if (!external_) return at;
+  const std::int64_t first = begin / 4, last = (end - 1) / 4;
+  if (words_.empty() || first < first_) {
+    words_.clear();
+    first_ = first;
+  }
+  // Words before this instruction's first are done with: the buffer holds what is still ahead.
+  while (first_ < first && words_.size() > 1) {
+    words_.pop_front();
+    ++first_;
+  }
+  while (first_ + std::int64_t(words_.size()) <= last) words_.push_back(bus_.access(at, 1));
+  return std::max(at, words_[std::size_t(last - first_)]);
+}
+
+void TimingStepper::Fetcher::started(std::int64_t begin, std::int64_t at) {
+  if (!external_ || begin % 4 != 0) return;
+  const std::int64_t next = begin / 4 + 1;
+  if (first_ + std::int64_t(words_.size()) == next) words_.push_back(bus_.access(at, 1));
+}
+
+void TimingStepper::Fetcher::set_external(bool external) {
+  if (external != external_) restart();
+  external_ = external;
+}
+
+TimingStepper::TimingStepper(const InstructionTimingTable& table, int external_cycles,
+                             bool code_external)
+    : table_(table), bus_{0, external_cycles}, fetch_(code_external, bus_) {}
+
+void TimingStepper::set_code_external(bool external) {
+  fetch_.set_external(external);
+}
+
+void TimingStepper::wait_until(std::int64_t cycle) {
+  iu_ = std::max(iu_, cycle);
+  fpu_ = std::max(fpu_, cycle);
+  bus_.free_at = std::max(bus_.free_at, cycle);
+}
+
+InstructionTime TimingStepper::step(const TimedStep& in) {
+  const InstructionTiming& t = table_[in.op];
+  if (!t.defined)
+    throw std::logic_error("timing: the " + std::string(table_.family) + " has no " +
+                           std::string(isa::mnemonic(in.op)) + " instruction");
+  const int cycles = t.cycles_for(in.param, in.real64) * int(in.rows);
+  const bool uses_fpu = t.unit != Unit::integer;
+
+  // The instruction proper starts once its prefixes ran, its code is in, and (FPU instructions)
+  // the FPU is free.
+  const std::int64_t issue = iu_ + in.prefix_cycles;
+  const std::int64_t code_ready = fetch_.ready(in.address, in.address + in.bytes, issue);
+  const std::int64_t start = std::max(code_ready, uses_fpu ? fpu_ : 0);
+  fetch_.started(in.address, start);
+
+  // External data accesses take the bus from the start; the table counts one cycle for each.
+  const int words = in.data_external ? t.words_for(in.param) * int(in.rows) : 0;
+  const int extra = words ? int(bus_.access(start, words) - start) - words : 0;
+
+  std::int64_t iu_end = start, fpu_end = start;
+  switch (t.unit) {
+    case Unit::integer:
+      iu_end = start + cycles + extra;
+      break;
+    case Unit::fp_load:
+    case Unit::fp_store:
+    case Unit::fp_result:
+      iu_end = fpu_end = start + cycles + extra;
+      break;
+    case Unit::fp_arithmetic:
+      iu_end = start + t.iu_part;
+      fpu_end = start + cycles;
+      break;
+    case Unit::fp_load_arithmetic:
+      iu_end = start + t.iu_part + extra;
+      fpu_end = start + cycles + extra;
+      break;
+  }
+
+  totals_.iu_busy += in.prefix_cycles + (iu_end - start);
+  if (uses_fpu) totals_.fpu_busy += fpu_end - start;
+  totals_.fetch_waits += std::max<std::int64_t>(0, code_ready - issue);
+  totals_.fpu_waits += std::max<std::int64_t>(0, start - code_ready);
+  totals_.memory_cycles += extra;
+  totals_.bytes += in.bytes;
+  ++totals_.instructions;
+  iu_ = iu_end;
+  if (uses_fpu) fpu_ = fpu_end;
+  return {start, iu_end, uses_fpu ? fpu_end : start, int(start - issue), extra};
+}
+
+}  // namespace t800

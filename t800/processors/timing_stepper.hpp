@@ -1,0 +1,110 @@
+// The instruction-level timing rule, one instruction at a time: the integer unit (IU) and the FPU
+// run concurrently by the rules of instruction_timing.hpp's Unit, every data access is priced by
+// where it lives and code in external memory is fetched a word ahead (sequence_timing.hpp says
+// how). The one source of this rule: the static model (time_sequence) steps through a generated
+// sequence with it, and the instruction-set simulator (t800/iss) steps through the instructions it
+// executes, so the two agree cycle for cycle on the same code.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+
+#include "t800/processors/instruction_timing.hpp"
+
+namespace t800 {
+
+// One instruction as the timing rule sees it.
+struct TimedStep {
+  isa::Op op = isa::Op::ldc;
+  int prefix_cycles = 0;       // bytes in front of the instruction proper (prefix_cycles())
+  int bytes = 1;               // its code bytes, prefixes included
+  std::int64_t address = 0;    // of its first byte: where its code words are
+  std::int64_t param = 0;      // what its timing depends on (Instruction::param)
+  std::int64_t rows = 1;       // 2D block moves: the figure is per row
+  bool real64 = false;         // FPU arithmetic on REAL64 operands
+  bool data_external = false;  // its data accesses go to external memory
+};
+
+// When one instruction ran (cycles from the stepper's start).
+struct InstructionTime {
+  std::int64_t start = 0;    // it began (after waiting for the FPU, its code or the bus)
+  std::int64_t iu_end = 0;   // the IU may issue the next instruction
+  std::int64_t fpu_end = 0;  // the FPU is free again (= start when the FPU is not involved)
+  int waited = 0;            // cycles it waited for the FPU, its code or the bus
+  int memory_extra = 0;      // cycles its external data accesses added
+};
+
+// Totals over the instructions stepped.
+struct StepTotals {
+  std::int64_t iu_busy = 0;        // cycles the IU executed (waits excluded)
+  std::int64_t fpu_busy = 0;       // cycles the FPU executed
+  std::int64_t fpu_waits = 0;      // IU cycles spent waiting for the FPU
+  std::int64_t fetch_waits = 0;    // cycles spent waiting for code from external memory
+  std::int64_t memory_cycles = 0;  // cycles external data accesses added
+  std::int64_t bytes = 0;          // code bytes executed
+  std::int64_t instructions = 0;
+};
+
+class TimingStepper {
+ public:
+  // `external_cycles`: one external access, wait states included; `code_external`: where the
+  // instructions are fetched from (the ISS says so per instruction through set_code_external).
+  TimingStepper(const InstructionTimingTable& table, int external_cycles, bool code_external);
+
+  // Times `step` after the instructions before it; throws std::logic_error if the family has no
+  // such instruction.
+  InstructionTime step(const TimedStep& step);
+  // Control went elsewhere (a jump taken, a call, a process switch): the prefetch buffer is empty
+  // and the next instruction's code is fetched from its own address, as at a sequence's start.
+  void restart_fetch() { fetch_.restart(); }
+  void set_code_external(bool external);
+  // Neither unit starts anything before `cycle` (the processor waited, idle or descheduled).
+  void wait_until(std::int64_t cycle);
+
+  std::int64_t iu_free() const { return iu_; }
+  std::int64_t fpu_free() const { return fpu_; }
+  // Until both units are idle.
+  std::int64_t end() const { return iu_ > fpu_ ? iu_ : fpu_; }
+  const StepTotals& totals() const { return totals_; }
+
+ private:
+  // The one external memory bus, shared by instruction fetches and data accesses.
+  struct Bus {
+    std::int64_t free_at = 0;
+    int access_cycles = 3;
+    // `words` accesses requested at `at`, one after the other; returns when the last is done.
+    std::int64_t access(std::int64_t at, int words);
+  };
+  // Code in external memory, fetched a word at a time, one word ahead of execution.
+  class Fetcher {
+   public:
+    Fetcher(bool external, Bus& bus) : external_(external), bus_(bus) {}
+    // The instruction in [begin, end) may start at `at`; when its code is in.
+    std::int64_t ready(std::int64_t begin, std::int64_t end, std::int64_t at);
+    // The instruction starting at `begin` began at `at`: if it starts a new word, the word after
+    // it may now be fetched.
+    void started(std::int64_t begin, std::int64_t at);
+    void restart() { words_.clear(); }
+    void set_external(bool external);
+
+   private:
+    bool external_;
+    Bus& bus_;
+    std::int64_t first_ = 0;          // the code word words_.front() is for
+    std::deque<std::int64_t> words_;  // when each code word since first_ is in the processor
+  };
+
+  const InstructionTimingTable& table_;
+  Bus bus_;
+  Fetcher fetch_;
+  std::int64_t iu_ = 0, fpu_ = 0;
+  StepTotals totals_;
+};
+
+// Cycles of the bytes in front of an instruction proper, one per byte (prefixes of a direct
+// function's operand, the pfix forming an operation code >= 16, and for an FPU operation selected
+// through fpentry the `ldc code` with its prefixes and fpentry's own pfix): the tables quote the
+// basic operation only (docs/t800-timing.md, "Instructions").
+int prefix_cycles(isa::Op op, std::int64_t operand);
+
+}  // namespace t800

@@ -1,0 +1,90 @@
+// The ISS times every instruction with the rule the static model uses: for straight-line code the
+// cycles of running it equal time_sequence's for the same instructions, and a hand count from the
+// datasheet's table.
+#include <gtest/gtest.h>
+
+#include "t800/processors/sequence_timing.hpp"
+#include "tests/iss/iss_fixtures.hpp"
+
+namespace {
+
+using iss_test::TestMachine;
+using t800::isa::Instruction;
+using t800::isa::Op;
+using t800::iss::StopReason;
+
+TEST(IssTiming, HandCountFromTheTable) {
+  // ldc 1 (1) + ldc 2 (1) + add (1) + stopp (11, prefixed: pfix 1; opr 5 = +1) and ajw 16
+  // (pfix 1; ajw 0: 1 + 1) = 2 + 3 + 12 = 17 cycles.
+  TestMachine m;
+  m.boot("ajw 16\nldc 1\nldc 2\nadd\nstopp\n");
+  EXPECT_EQ(m.run(), StopReason::idle);
+  EXPECT_EQ(m.core.cycle(), 17);
+}
+
+TEST(IssTiming, StraightLineCodeTakesWhatTheStaticModelSays) {
+  // Integer and FPU instructions overlapping, loads and stores: the static model's sequence
+  // and the ISS's run of the same bytes.
+  const std::string source = R"(
+        ajw 16
+        ldc 3
+        stl 1
+        ldl 1
+        ldl 1
+        mul
+        stl 2
+        ldlp 4
+        fpldzerosn
+        fpldzerosn
+        fpadd
+        ldc 5
+        ldc 7
+        add
+        stl 3
+        fpstnlsn
+        ldlp 6
+        fpldzerodb
+        fpdup
+        fpmul
+        fpstnldb
+        ldc 1
+        ldc 9
+        shl
+        stl 5
+        stopp
+)";
+  const t800::isa::Sequence sequence = {
+      {Op::ajw, 16},  {Op::ldc, 3},  {Op::stl, 1},     {Op::ldl, 1},     {Op::ldl, 1},
+      {Op::mul},      {Op::stl, 2},  {Op::ldlp, 4},    {Op::fpldzerosn}, {Op::fpldzerosn},
+      {Op::fpadd},    {Op::ldc, 5},  {Op::ldc, 7},     {Op::add},        {Op::stl, 3},
+      {Op::fpstnlsn}, {Op::ldlp, 6}, {Op::fpldzerodb}, {Op::fpdup},      {Op::fpmul, 0, 0, true},
+      {Op::fpstnldb}, {Op::ldc, 1},  {Op::ldc, 9},     {Op::shl, 0, 9},  {Op::stl, 5},
+      {Op::stopp},
+  };
+  TestMachine m;
+  m.boot(source);
+  EXPECT_EQ(m.run(), StopReason::idle);
+  const auto expected = t800::time_sequence(
+      sequence, t800::processor_model(t800::ProcessorType::T800_20), t800::MemoryView{});
+  EXPECT_EQ(m.core.cycle(), expected.cycles);
+  EXPECT_EQ(m.core.timing().instructions, expected.instructions);
+  EXPECT_EQ(m.core.timing().bytes, expected.bytes);
+  EXPECT_EQ(m.core.timing().fpu_busy, expected.fpu_busy);
+}
+
+TEST(IssTiming, ExternalMemoryCostsItsAccessCycles) {
+  // ldnl from on-chip memory: 2 cycles; from external memory it waits for the bus: one access of
+  // 3 cycles (+ wait states) instead of the table's one cycle.
+  auto cycles = [](std::uint32_t address, int wait_states) {
+    TestMachine m(t800::ProcessorType::T800_20, 1 << 20, t800::iss::AddressPolicy::wrap,
+                  wait_states);
+    m.boot("ajw 16\nldc " + std::to_string(address) + "\nldnl 0\nstopp\n");
+    m.run();
+    return m.core.cycle();
+  };
+  const std::int64_t on_chip = cycles(0x80000200u, 0), external = cycles(0x80010000u, 0);
+  EXPECT_EQ(external - on_chip, 3 - 1);
+  EXPECT_EQ(cycles(0x80010000u, 2) - on_chip, 3 + 2 - 1);
+}
+
+}  // namespace
