@@ -363,8 +363,8 @@ void Core::operate(const Decoded& d, TimedStep& t) {
       return;
     case Op::tin:
       if (!after(clock(r.priority), r.a)) {
-        t.param = 1;  // in the future: the process waits in the timer queue
-        insert_timer(r.a);
+        t.param = 1;            // in the future: the process waits in the timer queue
+        insert_timer(r.a + 1);  // due once the clock is AFTER A
         deschedule("timer input (tin)", 0);
       }
       return;
