@@ -51,7 +51,7 @@ set_target_properties(t800sim_run PROPERTIES EXPORT_NAME run)
 
 # The libraries an SDK user links, in lib/t800sim/ (their names -- network, workloads -- are too
 # plain for lib/).
-install(TARGETS t800_code t800 network numerics workloads t800sim_sdk programs registered_workloads scene tools
+install(TARGETS t800_code t800_iss t800_host t800 network numerics workloads t800sim_sdk programs registered_workloads scene tools
                 t800sim_run t800sim_plugin
         EXPORT t800simTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/t800sim
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -25,6 +25,8 @@ int sc_main(int argc, char* argv[]) {
   tools::add_merge_command(app);
   tools::add_vcd_command(app);
   tools::add_listing_command(app);
+  tools::add_asm_command(app);
+  tools::add_boot_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -18,35 +18,40 @@ constexpr std::size_t kMinFirstStage = 2, kMaxFirstStage = 255;  // 0, 1: poke, 
 // channel in B, the destination in C, and, like every instruction that can deschedule, leaves
 // A, B, C undefined, which is why everything the loader needs later lives in memory.
 //
-// Workspace. At entry Wptr = P, the word after the loader, which is where the program goes. The
-// length and the channel are first kept at P+0 and P+4; once the length is known the workspace
-// moves to Q = P + length rounded up to a word, just above the program, before the program is
-// read over P. The new words are at Q, Q+4, Q+8 with Q >= P+4, so P+0 (the length) is never
-// overwritten before it is copied, whatever the length; P+4 (the channel) is copied before the
-// first new word is written.
+// Workspace. At entry Wptr = P, the word after the loader, which is where the program goes. A
+// process waiting in `in` keeps its Iptr and its destination in the words just below Wptr (CWG,
+// "input message": W[-1], W[-3]), so the loader first moves its workspace five words up, leaving
+// its own code intact below, and keeps the length and the channel at P+20 and P+24. Once the
+// length L is known the workspace moves to Q = P + L rounded up to a word + 20: the five words
+// below Q, which the second `in` uses, lie above the program it reads over P. The new words are at
+// Q, Q+4, Q+8 with Q >= P+24, so the length at P+20 is never overwritten before it is copied; the
+// channel at P+24 is carried on the stack through gajw. Before entering the program the loader
+// steps Wptr back down to P + L rounded up, where the hardware puts it above a first stage.
 constexpr std::string_view kPrimary =
     R"(-- t800sim primary loader: reads a 4-byte length, then that many bytes, from the boot link
 -- into memory right after itself, then enters them as a hardware boot enters a first stage.
 -- Entry: Iptr = MemStart, Wptr = P (the word after this code), C = boot link input channel.
+        ajw   5          -- Wptr = P+20: the words a waiting `in` takes below it are not code
         stl   0          -- pop the undefined A: A = B, B = C (the channel)
         stl   0          -- pop the undefined B: A = the channel
-        stl   1          -- W[1] (P+4) = channel
-        ldlp  0          -- C for in: the length goes to W[0] (P+0)
+        stl   1          -- W[1] (P+24) = channel
+        ldlp  0          -- C for in: the length goes to W[0] (P+20)
         ldl   1          -- B for in: the channel
         ldc   4          -- A for in: 4 bytes
         in               -- W[0] = program length L, little-endian
         ldl   1          -- the channel, kept on the stack (in B or C) through gajw
         ldl   0          -- L
-        adc   3          -- L + 3
+        adc   23         -- L + 3 (to round up) + 20 (the five words below the new Wptr)
         ldc   -4         -- a mask of whole words
-        and              -- L rounded up to a word
-        ldlp  0          -- P
-        bsub             -- A = Q = P + rounded L, the first word above the program; B = channel
-        gajw             -- Wptr = Q; A = P (the old Wptr); B = channel
-        stl   0          -- W[0] (Q) = P, where the program goes and starts
+        and              -- L rounded up to a word, + 20
+        ldlp  -5         -- P
+        bsub             -- A = Q = P + rounded L + 20; B = channel
+        gajw             -- Wptr = Q; A = P+20 (the old Wptr); B = channel
+        adc   -20        -- P, where the program goes and starts
+        stl   0          -- W[0] (Q) = P
         stl   1          -- W[1] = channel
         ldl   0          -- P
-        ldnl  0          -- L, from the old W[0] at P (below every new word)
+        ldnl  5          -- L, from the old W[0] at P+20 (below every new word)
         stl   2          -- W[2] = L
         ldl   0          -- C for in: P
         ldl   1          -- B for in: the channel
@@ -55,7 +60,8 @@ constexpr std::string_view kPrimary =
         ldl   1          -- C at entry: the channel, as at reset
         ldl   2          -- B at entry: L
         ldl   0          -- A: the program's first byte
-        gcall            -- Iptr = P, A = the return address; Wptr stays Q
+        ajw   -5         -- Wptr = P + rounded L, just above the program
+        gcall            -- Iptr = P, A = the return address
 )";
 
 std::uint32_t round_up_to_word(std::uint32_t n) {

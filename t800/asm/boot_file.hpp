@@ -7,8 +7,8 @@
 // are poke and peek, so a first stage has 2 .. 255 bytes.
 //
 // A program longer than that is sent in two stages (two_stage): a small primary loader of ours
-// (primary_loader_source(), position-independent, T414-compatible) as the first stage, then the
-// program's length as a 4-byte little-endian word, then the program. The primary reads the
+// (primary_loader_source(), 38 bytes, position-independent, T414-compatible) as the first stage,
+// then the program's length as a 4-byte little-endian word, then the program. The primary reads the
 // length and the program from the boot link into memory right after itself (program_address())
 // and enters it the way the hardware enters a first stage:
 //
@@ -17,7 +17,7 @@
 //   C    = the boot link's input channel, as at reset
 //   B    = the program's length in bytes
 //   A    = the address after the primary's gcall (of no use)
-//   W[0] = Iptr, W[1] = the boot link's input channel, W[2] = the length (the primary's own
+//   W[5] = Iptr, W[6] = the boot link's input channel, W[7] = the length (the primary's own
 //          variables, left in the program's workspace; a program may overwrite them)
 //
 // so a program written to be booted directly runs unchanged through the two-stage loader, once

@@ -571,7 +571,7 @@ Bytes SpServer::getkey() {
   const auto c = host_.in->get();
   if (c == std::istream::traits_type::eof()) return reply(SpResult::kError);
   SpReplyWriter writer(SpResult::kOk);
-  writer.put_u8(static_cast<std::uint8_t>(c));
+  writer.put_u8(key(c));
   return std::move(writer).finish();
 }
 
@@ -583,8 +583,13 @@ Bytes SpServer::pollkey() {
     return reply(SpResult::kError);
   }
   SpReplyWriter writer(SpResult::kOk);
-  writer.put_u8(static_cast<std::uint8_t>(host_.in->get()));
+  writer.put_u8(key(host_.in->get()));
   return std::move(writer).finish();
+}
+
+std::uint8_t SpServer::key(int c) const {
+  if (options_.newline_is_return && c == '\n') return '\r';
+  return static_cast<std::uint8_t>(c);
 }
 
 // SP.GETENV: slice name -> result, slice value. The error result for an empty or unknown name; a

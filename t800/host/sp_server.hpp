@@ -79,6 +79,12 @@ struct SpServerOptions {
   // SP.CORE's memory image (iserver's CoreDump, peeked with -sa); without one, SP.CORE fails.
   std::optional<std::vector<std::uint8_t>> core;
   SpIdentity identity;
+  // GETKEY and POLLKEY read keys from the host's input stream. The iserver puts the terminal in
+  // raw mode, where the Return key is a carriage return, and programs end a typed line on it
+  // (hostio's so.read.echo.int waits for #0D); a stream of text lines (a pipe, a file, a terminal
+  // in its usual line mode) ends them with a newline instead. Set, a newline is given as the
+  // carriage return a raw terminal would give.
+  bool newline_is_return = false;
 };
 
 // What the server touches outside its root: the three predefined streams, the clock, the
@@ -139,6 +145,7 @@ class SpServer {
   std::vector<std::uint8_t> commandline(SpRequestReader& fields);
   std::vector<std::uint8_t> core(SpRequestReader& fields);
   std::vector<std::uint8_t> version();
+  std::uint8_t key(int c) const;  // a key read for GETKEY or POLLKEY, as the program gets it
 
   // The open stream with this id, or null (iserver files.c FindFileDes).
   detail::SpStream* stream(std::int32_t id);

@@ -16,6 +16,7 @@ bool alternating(Word state) {
 }  // namespace
 
 void Core::input(Word count, Word channel, Word pointer) {
+  if (!block_fits(count, "in")) return;
   if (is_link_channel(channel)) {
     if (is_link_output(channel)) {
       halt(fmt::format("in on link {}'s output channel #{:08X}", link_of(channel), channel),
@@ -48,6 +49,7 @@ void Core::input(Word count, Word channel, Word pointer) {
 }
 
 void Core::output(Word count, Word channel, Word pointer) {
+  if (!block_fits(count, "out")) return;
   if (is_link_channel(channel)) {
     if (!is_link_output(channel)) {
       halt(fmt::format("out on link {}'s input channel #{:08X}", link_of(channel), channel),
@@ -174,7 +176,7 @@ void Core::reset_channel(Word channel) {
   r_.a = held;
 }
 
-void Core::output_done(int link) {
+void Core::output_done_unguarded(int link) {
   const Word channel = kLinkOutput0 + Word(4 * link);
   const Word waiting = memory_.word(channel);
   if (waiting == kNotProcess) return;  // reset meanwhile
@@ -182,7 +184,15 @@ void Core::output_done(int link) {
   schedule(waiting);
 }
 
-void Core::input_done(int link, const std::vector<std::uint8_t>& bytes) {
+void Core::output_done(int link) {
+  try {
+    output_done_unguarded(link);
+  } catch (const MemoryFault& fault) {
+    memory_fault(fault, r_.iptr);
+  }
+}
+
+void Core::input_done_unguarded(int link, const std::vector<std::uint8_t>& bytes) {
   const Word channel = kLinkInput0 + Word(4 * link);
   const Word waiting = memory_.word(channel);
   if (waiting == kNotProcess) return;
@@ -192,7 +202,15 @@ void Core::input_done(int link, const std::vector<std::uint8_t>& bytes) {
   schedule(waiting);
 }
 
-void Core::input_arrived(int link) {
+void Core::input_done(int link, const std::vector<std::uint8_t>& bytes) {
+  try {
+    input_done_unguarded(link, bytes);
+  } catch (const MemoryFault& fault) {
+    memory_fault(fault, r_.iptr);
+  }
+}
+
+void Core::input_arrived_unguarded(int link) {
   const Word channel = kLinkInput0 + Word(4 * link);
   const Word waiting = memory_.word(channel);
   if (waiting == kNotProcess) return;
@@ -204,6 +222,14 @@ void Core::input_arrived(int link) {
     schedule(waiting);
   } else if (state == kEnabling) {
     memory_.set_word(slot_of(wptr, kSlotState), kReady);
+  }
+}
+
+void Core::input_arrived(int link) {
+  try {
+    input_arrived_unguarded(link);
+  } catch (const MemoryFault& fault) {
+    memory_fault(fault, r_.iptr);
   }
 }
 

@@ -46,15 +46,25 @@ void Core::start_boot_program(Word length, int boot_link) {
 
 StopReason Core::run(std::int64_t until, std::int64_t max_instructions) {
   const std::int64_t last = instructions_ + max_instructions;
+  // Under strict addressing the scheduler's own accesses (a queue's front, a timer's workspace)
+  // and the instruction fetch may fault too, not only an instruction's operands.
   while (!halt_) {
-    if (cycle() >= next_timer_) fire_timers();
-    if (!running_) {
-      next_process();
-      if (!running_) return StopReason::idle;
+    try {
+      if (cycle() >= next_timer_) fire_timers();
+      if (!running_) {
+        next_process();
+        if (!running_) return StopReason::idle;
+      }
+      if (cycle() >= until) return StopReason::running;
+      if (instructions_ >= last) return StopReason::limit;
+      step(decoded_.at(r_.iptr));
+    } catch (const MemoryFault& fault) {
+      memory_fault(fault, r_.iptr);
     }
-    if (cycle() >= until) return StopReason::running;
-    if (instructions_ >= last) return StopReason::limit;
-    step(decoded_.at(r_.iptr));
+    if (sync_requested_) {
+      sync_requested_ = false;
+      if (!halt_) return StopReason::sync;
+    }
   }
   return StopReason::halted;
 }
@@ -84,7 +94,7 @@ void Core::step(const Decoded& d) {
     execute(d, t);
   } catch (const MemoryFault& fault) {
     r_.iptr = at;
-    halt(fmt::format("memory fault: {} (strict addressing)", fault.what()), at);
+    memory_fault(fault, at);
     return;
   }
   ++instructions_;
@@ -96,13 +106,28 @@ void Core::undefined(const Decoded&, const std::string& what) {
   halt(what, r_.iptr);
 }
 
+void Core::memory_fault(const MemoryFault& fault, Word iptr) {
+  halt(fmt::format("memory fault: {} (strict addressing)", fault.what()), iptr);
+}
+
+bool Core::block_fits(Word count, std::string_view what) {
+  if (std::int64_t(count) <= memory_.installed_bytes()) return true;
+  halt(fmt::format("{} of {} bytes, more than the {} bytes of installed memory", what, count,
+                   memory_.installed_bytes()),
+       r_.iptr - 1);
+  return false;
+}
+
 void Core::halt(const std::string& reason, Word iptr) {
   HaltReport h;
   h.reason = reason;
   h.iptr = iptr;
-  const Decoded d = decode(memory_, iptr);
-  for (int k = 0; k < std::max<int>(1, d.bytes); ++k)
-    h.bytes.push_back(memory_.byte(iptr + Word(k)));
+  try {  // the instruction's bytes, as far as they can be read (strict: maybe not at all)
+    const Decoded d = decode(memory_, iptr);
+    for (int k = 0; k < std::max<int>(1, d.bytes); ++k)
+      h.bytes.push_back(memory_.byte(iptr + Word(k)));
+  } catch (const MemoryFault&) {
+  }
   h.registers = r_;
   h.registers.iptr = iptr;
   halt_ = h;

@@ -60,7 +60,10 @@ struct WaitingProcess {
   std::string what;  // "input", "output", "ALT", "timer", "stopped"
 };
 
-enum class StopReason { running, limit, idle, halted };
+// running: the cycle bound was reached; sync: something outside must act now (a link transfer
+// started: its owner starts it at the core's cycle, see request_sync); limit: the instruction
+// budget is spent; idle: nothing to run; halted: see halt_report.
+enum class StopReason { running, sync, limit, idle, halted };
 
 struct HaltReport {
   std::string reason;  // "undefined operation #1FE", "HaltOnError: error set by add", ...
@@ -97,6 +100,11 @@ class Core {
   void input_done(int link, const std::vector<std::uint8_t>& bytes);
   void input_arrived(int link);
   void set_link_engine(LinkEngine* engine) { links_ = engine; }
+  // From a LinkEngine callback: run() returns StopReason::sync after the current instruction, so
+  // the transfer can start at the core's cycle instead of wherever its run-ahead reaches.
+  void request_sync() { sync_requested_ = true; }
+  // Link DMA took `cycles` memory cycles the CPU waited for (docs/t800-timing.md 6).
+  void stall(std::int64_t cycles) { stepper_.wait_until(cycle() + cycles); }
 
   std::int64_t cycle() const { return stepper_.iu_free(); }
   // The earliest cycle a waiting timer fires, or none.
@@ -126,6 +134,14 @@ class Core {
   void undefined(const Decoded& d, const std::string& what);
   void halt(const std::string& reason, Word iptr);
   void set_error(const char* by);
+  // A block (in, out, move) longer than the installed memory is refused with a halt: on a board
+  // with partial decoding it would copy over itself for minutes of host time, on any board it is a
+  // wild count.
+  bool block_fits(Word count, std::string_view what);
+  void memory_fault(const MemoryFault& fault, Word iptr);
+  void output_done_unguarded(int link);
+  void input_done_unguarded(int link, const std::vector<std::uint8_t>& bytes);
+  void input_arrived_unguarded(int link);
 
   // Stack.
   void push(Word v) {
@@ -177,7 +193,8 @@ class Core {
   Fpu fpu_;
   LinkEngine* links_ = nullptr;
   std::int64_t instructions_ = 0;
-  bool running_ = false;          // a process holds the CPU
+  bool running_ = false;  // a process holds the CPU
+  bool sync_requested_ = false;
   bool low_interrupted_ = false;  // a low-priority process's state is in the save area
   Fpu saved_low_fpu_;             // its FPU registers (the chip keeps them in the FPU)
   bool timers_running_ = false;

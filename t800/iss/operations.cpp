@@ -6,6 +6,7 @@
 
 #include "t800/iss/core.hpp"
 #include "t800/iss/integer_arithmetic.hpp"
+#include "t800/iss/t414_float_support.hpp"
 
 namespace t800::iss {
 
@@ -248,6 +249,7 @@ void Core::operate(const Decoded& d, TimedStep& t) {
     }
     case Op::move:
       // C source, B destination, A bytes (CWG).
+      if (!block_fits(r.a, "move")) return;
       t.param = words_of(r.a);
       data_at(t, r.b);
       memory_.copy(r.b, r.c, r.a);
@@ -263,6 +265,9 @@ void Core::operate(const Decoded& d, TimedStep& t) {
       // C source, B destination, A width in bytes; rows and strides from move2dinit.
       const Word width = r.a, rows = move2d_length_;
       if (std::int32_t(width) < 0 || std::int32_t(rows) < 0) return;
+      if (!block_fits(Word(std::min<std::uint64_t>(std::uint64_t(width) * rows, ~0u)),
+                      isa::mnemonic(d.op)))
+        return;
       t.param = words_of(width);
       t.rows = rows;
       data_at(t, r.b);
@@ -512,6 +517,11 @@ void Core::operate(const Decoded& d, TimedStep& t) {
     default:
       if (isa::info(d.op).encoding == isa::Encoding::fpu_entry || d.op >= Op::fpldnlsn) {
         fpu_operate(d.op, t);
+        return;
+      }
+      if (is_t414_float_support(d.op)) {                               // t414_float_support.cpp
+        const Word temp = d.op == Op::postnormsn ? ws(kSlotTemp) : 0;  // its exponent
+        if (t414_float_support(d.op, r.a, r.b, r.c, temp)) set_error("cflerr");
         return;
       }
       halt(fmt::format("{} is not modelled by this simulator", isa::mnemonic(d.op)),

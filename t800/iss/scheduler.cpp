@@ -189,7 +189,11 @@ std::optional<std::int64_t> Core::next_timer_cycle() const {
 
 void Core::advance_to(std::int64_t target) {
   if (target > cycle()) stepper_.wait_until(target);
-  if (cycle() >= next_timer_) fire_timers();
+  try {
+    if (cycle() >= next_timer_) fire_timers();
+  } catch (const MemoryFault& fault) {
+    memory_fault(fault, r_.iptr);
+  }
 }
 
 std::vector<WaitingProcess> Core::waiting() const {

@@ -34,12 +34,13 @@ TEST(BootFile, SingleStageRefusesWhatTheChipWouldNotTakeAsCode) {
 }
 
 TEST(BootFile, PrimaryLoaderBytes) {
-  // stl 0, stl 0, stl 1, ldlp 0, ldl 1, ldc 4, in; ldl 1, ldl 0, adc 3, ldc -4 (nfix 0, ldc C),
-  // and (opr #46), ldlp 0, bsub, gajw (opr #3C); stl 0, stl 1, ldl 0, ldnl 0, stl 2; ldl 0,
-  // ldl 1, ldl 2, in; ldl 1, ldl 2, ldl 0, gcall.
-  const Bytes expected{0xD0, 0xD0, 0xD1, 0x10, 0x71, 0x44, 0xF7, 0x71, 0x70, 0x83, 0x60,
-                       0x4C, 0x24, 0xF6, 0x10, 0xF2, 0x23, 0xFC, 0xD0, 0xD1, 0x70, 0x30,
-                       0xD2, 0x70, 0x71, 0x72, 0xF7, 0x71, 0x72, 0x70, 0xF6};
+  // ajw 5; stl 0, stl 0, stl 1, ldlp 0, ldl 1, ldc 4, in; ldl 1, ldl 0, adc 23 (pfix 1, adc 7),
+  // ldc -4 (nfix 0, ldc C), and (opr #46), ldlp -5 (nfix 0, ldlp B), bsub, gajw (opr #3C),
+  // adc -20 (nfix 1, adc C); stl 0, stl 1, ldl 0, ldnl 5, stl 2; ldl 0, ldl 1, ldl 2, in; ldl 1,
+  // ldl 2, ldl 0, ajw -5 (nfix 0, ajw B), gcall.
+  const Bytes expected{0xB5, 0xD0, 0xD0, 0xD1, 0x10, 0x71, 0x44, 0xF7, 0x71, 0x70, 0x21, 0x87, 0x60,
+                       0x4C, 0x24, 0xF6, 0x60, 0x1B, 0xF2, 0x23, 0xFC, 0x61, 0x8C, 0xD0, 0xD1, 0x70,
+                       0x35, 0xD2, 0x70, 0x71, 0x72, 0xF7, 0x71, 0x72, 0x70, 0x60, 0xBB, 0xF6};
   EXPECT_EQ(primary_loader(), expected);
   EXPECT_EQ(assemble(primary_loader_source()).bytes, expected);
   // Position-independent: the same bytes at any origin.
@@ -47,9 +48,9 @@ TEST(BootFile, PrimaryLoaderBytes) {
 }
 
 TEST(BootFile, ProgramAddressIsTheWordAfterThePrimary) {
-  EXPECT_EQ(program_address(kMemStartT800), 0x80000090u);  // #80000070 + 31, rounded up
-  EXPECT_EQ(program_address(kMemStartT414), 0x80000068u);
-  EXPECT_EQ(program_address(), 0x80000090u);
+  EXPECT_EQ(program_address(kMemStartT800), 0x80000098u);  // #80000070 + 38, rounded up
+  EXPECT_EQ(program_address(kMemStartT414), 0x80000070u);  // #80000048 + 38, rounded up
+  EXPECT_EQ(program_address(), 0x80000098u);
 }
 
 TEST(BootFile, TwoStageLayout) {
@@ -143,6 +144,9 @@ class Model {
       case 0x8:
         a += operand;
         return true;  // adc
+      case 0xB:
+        wptr += 4 * operand;
+        return true;  // ajw
       case 0xD:
         store(wptr + 4 * operand, pop());
         return true;  // stl
@@ -164,6 +168,11 @@ class Model {
         return true;
       case 0x07: {  // in: A bytes from channel B to C; the stack is undefined afterwards
         if (b != kBootLinkIn) return false;
+        // The process waits: its Iptr goes to W[-1] and the destination to W[-3] (CWG, "input
+        // message"), and the link's words W[-2] may change too.
+        store(wptr - 4, iptr);
+        store(wptr - 8, kJunk + 4);
+        store(wptr - 12, c);
         for (std::uint32_t i = 0; i < a; ++i) memory_[c + i] = next_byte();
         a = b = c = kJunk + 3;
         return true;
@@ -199,14 +208,14 @@ void expect_loads_and_enters(std::size_t length, std::uint32_t mem_start) {
   EXPECT_EQ(model.wptr, p + ((std::uint32_t(length) + 3) & ~3u)) << "length " << length;
   EXPECT_EQ(model.c, Model::kBootLinkIn) << "length " << length;
   EXPECT_EQ(model.b, length);
-  EXPECT_EQ(model.word(model.wptr), p);
-  EXPECT_EQ(model.word(model.wptr + 4), Model::kBootLinkIn);
-  EXPECT_EQ(model.word(model.wptr + 8), length);
+  EXPECT_EQ(model.word(model.wptr + 20), p);
+  EXPECT_EQ(model.word(model.wptr + 24), Model::kBootLinkIn);
+  EXPECT_EQ(model.word(model.wptr + 28), length);
 }
 
 TEST(BootFile, PrimaryLoadsAndEntersTheProgramOnAModel) {
-  // 1 .. 13 cover the new workspace overlapping the old one (a length of 1 .. 8 puts the new
-  // words on the old ones at P+4 and P+8).
+  // 1 .. 13 cover the new workspace overlapping the old one (a length of 1 .. 4 puts the new
+  // W[0] on the old channel word at P+24, 5 .. 8 the new W[0] just above it).
   for (std::size_t length = 1; length <= 13; ++length)
     expect_loads_and_enters(length, kMemStartT800);
   expect_loads_and_enters(300, kMemStartT800);

@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "fuzz/harness.hpp"
+#include "fuzz/iss_harness.hpp"
 
 namespace {
 
@@ -39,5 +40,13 @@ void replay(const std::string& target, F&& harness) {
 TEST(FuzzCorpus, ConfigurationFiles) { replay("config", fuzz::read_config); }
 
 TEST(FuzzCorpus, SetOverrides) { replay("set", fuzz::apply_overrides); }
+
+// The instruction-set simulator's inputs (fuzz/iss_harness.hpp): machine code on the ISS, SP
+// request bodies on the SP server, text through the assembler.
+TEST(FuzzCorpus, MachineCode) { replay("decoder", fuzz::run_machine_code); }
+
+TEST(FuzzCorpus, SpRequests) { replay("sp", fuzz::serve_sp_requests); }
+
+TEST(FuzzCorpus, AssemblerText) { replay("asm", fuzz::assemble_source); }
 
 }  // namespace

@@ -105,6 +105,13 @@ TEST_F(SpServerHost, GetKeyAndPollKey) {
   EXPECT_EQ(handle(Bytes{30, 0, 0, 0, 0, 0}), kError);
 }
 
+TEST_F(SpServerHost, ANewlineIsTheReturnKeyWhenAsked) {
+  options_.newline_is_return = true;
+  in_.str("7\n");
+  EXPECT_EQ(handle(Bytes{30, 0, 0, 0, 0, 0}), (Bytes{0, '7', 0, 0, 0, 0}));
+  EXPECT_EQ(handle(Bytes{30, 0, 0, 0, 0, 0}), (Bytes{0, '\r', 0, 0, 0, 0}));
+}
+
 TEST_F(SpServerHost, GetEnvListedVariablesOnly) {
   options_.environment.fixed = {{"IBOARDSIZE", "#200000"}};
   // GETENV (32), slice name -> OK, slice value.

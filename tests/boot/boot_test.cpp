@@ -1,0 +1,197 @@
+// `t800sim asm` and `t800sim boot` end to end: programs the project assembles, booted through the
+// host link onto one board or a network, served by the host, timed by the link model.
+#include <gtest/gtest.h>
+
+#include "t800/link_timing.hpp"
+#include "tests/boot/boot_fixtures.hpp"
+
+namespace {
+
+using namespace boot_test;
+
+const std::string kTopologies = std::string(T800SIM_SOURCE_DIR) + "/configs/topologies/";
+
+TEST(Boot, HelloWritesToStdoutAndExitsWithTheProgramsStatus) {
+  const auto dir = scratch("hello");
+  const std::string file = assemble(dir, "hello", example_with("hello.s", {}));
+  ASSERT_FALSE(file.empty());
+  const Booted b = boot(dir, file);
+  EXPECT_EQ(b.output.exit_code, 0) << b.output.out;
+  EXPECT_NE(b.output.out.find("hello, transputer\n"), std::string::npos) << b.output.out;
+  ASSERT_TRUE(b.report.is_object());
+  EXPECT_EQ(b.report["workload"]["exit_status"], 999999999);  // sps.success
+  EXPECT_EQ(b.report["workload"]["host_requests"], 2);        // SP.WRITE, SP.EXIT
+}
+
+TEST(Boot, AnExitStatusThatIsNotTheToolsetsIsTheExitCode) {
+  const auto dir = scratch("status");
+  std::string source = example_with("hello.s", {});
+  const auto at = source.find(".word 999999999");
+  ASSERT_NE(at, std::string::npos);
+  source.replace(at, 15, ".word 7");
+  const Booted b = boot(dir, assemble(dir, "seven", source));
+  EXPECT_EQ(b.output.exit_code, 7) << b.output.out;
+}
+
+// Every processor of the chain is booted by its neighbour through the chip's boot protocol, runs
+// the same loop, and the sum of the processors that ran comes back as the exit status.
+TEST(Boot, AChainBootsEveryProcessorThroughItsNeighbour) {
+  const auto dir = scratch("chain");
+  const std::string file =
+      assemble(dir, "chain", example_with("chain.s", {{"iterations", "1000"}}));
+  ASSERT_FALSE(file.empty());
+  const Booted b = boot(dir, file, "--network " + kTopologies + "pipeline-6.toml");
+  EXPECT_EQ(b.output.exit_code, 6) << b.output.out;
+  ASSERT_TRUE(b.report.is_object());
+  const auto& processors = b.report["workload"]["processors"];
+  ASSERT_EQ(processors.size(), 6u);
+  // Instructions counted by hand from chain.s. The loop: 6 an iteration (ldl adc stl ldl cj j),
+  // 5 the last time round. Before it: 11 to read hops and first, 20 to boot the next processor
+  // (the last boots nobody), 2 to set the count. After it: 8 to read the sum from behind (4 on
+  // the last, which has nobody behind), 5 to add its own one; then the first sends SP.EXIT and
+  // starts to read the reply (20 instructions: the host stops serving, and the run ends, while
+  // it waits), the others pass the sum back (5).
+  const int loop = 6 * 999 + 5;
+  for (int i = 0; i < 6; ++i) {
+    const auto& p = processors[i];
+    EXPECT_TRUE(p["booted"]) << p;
+    EXPECT_EQ(p["boot_link"], 0) << p;
+    const int expected = i == 0   ? 11 + 20 + 2 + loop + 8 + 5 + 20
+                         : i == 5 ? 11 + 2 + loop + 4 + 5 + 5
+                                  : 11 + 20 + 2 + loop + 8 + 5 + 5;
+    EXPECT_EQ(p["instructions"], expected) << p;
+  }
+}
+
+TEST(Boot, ATwoStageBootFileLoadsThroughThePrimaryLoader) {
+  const auto dir = scratch("two-stage");
+  const std::string file =
+      assemble(dir, "chain", example_with("chain.s", {{"iterations", "100"}}), "--boot two-stage");
+  ASSERT_FALSE(file.empty());
+  // Only the first processor is booted in two stages; it boots the others with one stage each,
+  // which its code, assembled for the two-stage address, does position-independently.
+  const Booted b = boot(dir, file, "--network " + kTopologies + "pipeline-6.toml");
+  EXPECT_EQ(b.output.exit_code, 6) << b.output.out;
+}
+
+// Ping-pong of n bytes between two booted processors, timed by the program's own microsecond
+// clock, against the link model's closed form for one uncontended message (LinkTiming): each
+// round is two n-byte messages, and a few instructions between them.
+TEST(Boot, PingPongTakesTheLinkModelsTimeForEachMessage) {
+  const auto dir = scratch("pingpong");
+  for (const int bytes : {1, 100, 1000}) {
+    const int rounds = 20;
+    const std::string file = assemble(
+        dir, "pp" + std::to_string(bytes),
+        example_with("pingpong.s",
+                     {{"bytes", std::to_string(bytes)}, {"rounds", std::to_string(rounds)}}));
+    ASSERT_FALSE(file.empty());
+    const Booted b = boot(dir, file, "--network " + kTopologies + "pair.toml");
+    ASSERT_TRUE(b.report.is_object()) << b.output.out;
+    const double measured_us = b.report["workload"]["exit_status"].get<double>();
+    const t800::LinkTiming link(t800::LinkConfig{});
+    const double links_us = rounds * 2 * link.arrival_ns(bytes) / 1000;
+    // Between two messages each side runs at most 14 instructions (the loop, the next transfer's
+    // operands, its out or in) of at most 8 cycles with their operand fetches, and the process is
+    // rescheduled once: under 10 us a round at 20 MHz for the two. And the clock's tick.
+    EXPECT_GE(measured_us, links_us - 1) << bytes << " bytes";
+    EXPECT_LE(measured_us, links_us + rounds * 10 + 1) << bytes << " bytes";
+  }
+}
+
+TEST(Boot, AnEmptyBootFileIsAnErrorNamingIt) {
+  const auto dir = scratch("empty");
+  write_text(dir / "empty.btl", "");
+  const Booted b = boot(dir, (dir / "empty.btl").string());
+  EXPECT_EQ(b.output.exit_code, 2) << b.output.out;
+  EXPECT_NE(b.output.out.find("empty.btl is empty"), std::string::npos) << b.output.out;
+}
+
+TEST(Boot, AFirstStageShorterThanItsLengthByteNamesTheOffset) {
+  const auto dir = scratch("short");
+  write_text(dir / "short.btl", std::string("\x0A\x21\x22", 3));  // 10 bytes announced, 2 given
+  const Booted b = boot(dir, (dir / "short.btl").string());
+  EXPECT_EQ(b.output.exit_code, 2) << b.output.out;
+  EXPECT_NE(b.output.out.find("truncated: the control byte 10 at byte offset 0 announces 10"),
+            std::string::npos)
+      << b.output.out;
+}
+
+// A two-stage file cut short: the primary loader waits for the rest of the program for ever; the
+// run ends with who waits on which link, after how many of how many bytes.
+TEST(Boot, ATruncatedLaterStageSaysWhoWaitsForWhat) {
+  const auto dir = scratch("truncated");
+  const std::string file = assemble(dir, "chain", example_with("chain.s", {}), "--boot two-stage");
+  ASSERT_FALSE(file.empty());
+  std::string bytes = read_text(file);
+  bytes.resize(bytes.size() - 10);
+  write_text(dir / "cut.btl", bytes);
+  const Booted b = boot(dir, (dir / "cut.btl").string());
+  EXPECT_EQ(b.output.exit_code, 1) << b.output.out;  // nothing can move: a deadlock report
+  EXPECT_NE(b.output.out.find("deadlock"), std::string::npos) << b.output.out;
+  EXPECT_NE(b.output.out.find("on channel #80000010 (link 0: "), std::string::npos) << b.output.out;
+  EXPECT_NE(b.output.out.find(" bytes have come)"), std::string::npos) << b.output.out;
+}
+
+TEST(Boot, AnUndefinedOperationHaltsWithAReport) {
+  const auto dir = scratch("undefined");
+  const Booted b = boot(dir, assemble(dir, "bad", "ajw 8\nldc 1\nopr #1FE\nstopp\n"));
+  EXPECT_EQ(b.output.exit_code, 3) << b.output.out;
+  EXPECT_NE(b.output.out.find("P0 halted: undefined operation #1FE"), std::string::npos)
+      << b.output.out;
+  ASSERT_TRUE(b.report.is_object());
+  EXPECT_EQ(b.report["workload"]["processors"][0]["halt"]["iptr"],
+            "#80000072");  // ajw, ldc: 2 bytes
+}
+
+TEST(Boot, AStrictWildAccessHaltsWithTheAddress) {
+  const auto dir = scratch("strict");
+  const std::string file = assemble(dir, "wild", "ajw 8\nldc #7FFFFFF0\nldnl 0\nstopp\n");
+  const Booted wrap = boot(dir, file);
+  EXPECT_EQ(wrap.output.exit_code, 1) << wrap.output.out;  // wraps, reads, stops (a STOP)
+  EXPECT_NE(wrap.output.out.find("stopped"), std::string::npos) << wrap.output.out;
+  const Booted strict = boot(dir, file, "--strict --memory 65536");
+  EXPECT_EQ(strict.output.exit_code, 3) << strict.output.out;
+  EXPECT_NE(strict.output.out.find("#7FFFFFF0"), std::string::npos) << strict.output.out;
+}
+
+TEST(Boot, InputOnALinkToNothingIsADeadlockNamingTheProcess) {
+  const auto dir = scratch("deadlock");
+  const Booted b = boot(dir, assemble(dir, "wait", "ajw 8\nldlp 0\nldc #80000014\nldc 4\nin\n"));
+  EXPECT_EQ(b.output.exit_code, 1) << b.output.out;
+  EXPECT_NE(b.output.out.find("input on channel #80000014"), std::string::npos) << b.output.out;
+}
+
+TEST(Boot, LimitsEndAProgramThatNeverStops) {
+  const auto dir = scratch("forever");
+  const std::string file = assemble(dir, "forever", "ajw 8\nloop: j loop\n");
+  const Booted by_count = boot(dir, file, "--max-instructions 100000");
+  EXPECT_EQ(by_count.output.exit_code, 4) << by_count.output.out;
+  EXPECT_NE(by_count.output.out.find("--max-instructions 100000"), std::string::npos);
+  const Booted by_time = boot(dir, file, "--max-simulated-s 0.01");
+  EXPECT_EQ(by_time.output.exit_code, 4) << by_time.output.out;
+  EXPECT_NE(by_time.output.out.find("--max-simulated-s"), std::string::npos);
+}
+
+TEST(Boot, ASceneRunsABootFileAsAWorkload) {
+  const auto dir = scratch("scene");
+  const std::string file = assemble(dir, "chain", example_with("chain.s", {{"iterations", "500"}}));
+  write_text(dir / "chain.toml", "name = \"boot-chain\"\n[network]\ntopology = \"" + kTopologies +
+                                     "pipeline-6.toml\"\n[workload]\nkind = \"boot\"\nfile = \"" +
+                                     file + "\"\n");
+  const auto o = cli_test::run("run " + (dir / "chain.toml").string() + " --json 2>&1");
+  EXPECT_EQ(o.exit_code, 0) << o.out;
+  EXPECT_NE(o.out.find("\"exit_status\": 6"), std::string::npos) << o.out;
+}
+
+TEST(Asm, AnErrorInTheSourceNamesLineAndColumn) {
+  const auto dir = scratch("asm");
+  write_text(dir / "bad.s", "ajw 8\n  ldc nowhere\n");
+  const auto o = cli_test::run("asm " + (dir / "bad.s").string() + " -o " +
+                               (dir / "bad.btl").string() + " 2>&1");
+  EXPECT_EQ(o.exit_code, 2) << o.out;
+  EXPECT_NE(o.out.find("bad.s:2:"), std::string::npos) << o.out;
+  EXPECT_FALSE(fs::exists(dir / "bad.btl"));
+}
+
+}  // namespace

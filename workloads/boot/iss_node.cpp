@@ -1,0 +1,366 @@
+#include "workloads/boot/iss_node.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "t800/timing_table.hpp"
+
+namespace workloads::boot {
+
+using t800::iss::StopReason;
+using t800::iss::Word;
+
+namespace {
+constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();
+
+t800::iss::CoreConfig core_config(const network::Machine& machine, int node,
+                                  const IssNodeOptions& options) {
+  const t800::ProcessorConfig& c = machine.transputer(node).config();
+  return {&t800::processor_model(c.type), options.installed_bytes, options.policy,
+          c.memory.wait_states};
+}
+
+}  // namespace
+
+IssNode::IssNode(network::Machine& machine, int node, BootSession& session,
+                 const IssNodeOptions& options)
+    : machine_(machine),
+      node_(node),
+      session_(session),
+      options_(options),
+      core_(core_config(machine, node, options)),
+      cycle_ns_(core_.processor().cycle_ns) {
+  core_.set_link_engine(this);
+  session_.account(node).name = machine.node_name(node);
+}
+
+std::int64_t IssNode::now_cycle() const {
+  const double ns = t800::sim_now().to_seconds() * 1e9;
+  return std::int64_t(std::ceil(ns / cycle_ns_ - 1e-9));
+}
+
+sc_core::sc_time IssNode::time_of(std::int64_t cycle) const {
+  return sc_core::sc_time(double(cycle) * cycle_ns_, sc_core::SC_NS);
+}
+
+// For deadlock reports: every waiting process, and for a link input how far it got.
+std::string IssNode::describe_waiting() const {
+  const auto waiting = core_.waiting();
+  if (waiting.empty()) return "idle, no process waiting";
+  std::string text;
+  for (const auto& w : waiting) {
+    if (!text.empty()) text += "; ";
+    text += fmt::format("process Wdesc #{:08X} at Iptr #{:08X}: {}", w.wdesc, w.iptr, w.what);
+    if (!w.channel) continue;
+    text += fmt::format(" on channel #{:08X}", w.channel);
+    if (!t800::iss::is_link_channel(w.channel)) continue;
+    const int link = t800::iss::link_of(w.channel);
+    if (!ports_[link]) {
+      text += fmt::format(" (link {} is connected to nothing)", link);
+    } else if (!t800::iss::is_link_output(w.channel) && ports_[link]->input_busy()) {
+      text += fmt::format(" (link {}: {} of {} bytes have come)", link, ports_[link]->buffered(),
+                          ports_[link]->input_wanted());
+    }
+  }
+  return text;
+}
+
+bool IssNode::outstanding() const {
+  for (int l = 0; l < 4; ++l)
+    if (output_busy_[l] || input_busy_[l] || watching_[l]) return true;
+  return false;
+}
+
+void IssNode::post(LinkEvent e) {
+  inbox_.push_back(std::move(e));
+  inbox_event_.notify(sc_core::SC_ZERO_TIME);
+}
+
+void IssNode::run(network::Process& p) {
+  t800::Transputer& t = machine_.transputer(node_);
+  for (int l = 0; l < 4; ++l)
+    if (t.port(l).link)
+      ports_[l] = std::make_unique<LinkPort>(
+          *t.port(l).link, t.port(l).end, fmt::format("{}_link{}", machine_.node_name(node_), l));
+  if (!boot(p)) return;
+  execute(p);
+}
+
+// --- reset: poke, peek, or load and run -------------------------------------------------------
+
+Bytes IssNode::read_boot_block(int link, std::int64_t count) {
+  ProcessorAccount& a = session_.account(node_);
+  a.waiting_link = link;
+  a.block_expected = count;
+  a.block_got = ports_[link]->buffered();
+  Bytes got;
+  bool done = false;
+  ports_[link]->start_input(count, [&](Bytes b) {
+    got = std::move(b);
+    done = true;
+    inbox_event_.notify(sc_core::SC_ZERO_TIME);
+  });
+  while (!done && !session_.over()) {
+    a.block_got = ports_[link]->buffered();
+    sc_core::wait(inbox_event_ | session_.ended_event());
+  }
+  a.block_got = done ? count : ports_[link]->buffered();
+  if (done) a.waiting_link = -1;
+  return done ? got : Bytes{};
+}
+
+bool IssNode::boot(network::Process& p) {
+  ProcessorAccount& a = session_.account(node_);
+  p.set_status_text("waiting at reset for a boot byte on any link");
+  for (int l = 0; l < 4; ++l)
+    if (ports_[l])
+      ports_[l]->start_input(1, [this, l](Bytes b) {
+        post({LinkEvent::Kind::input_done, l, std::move(b)});
+      });
+  for (;;) {
+    while (inbox_.empty() && !session_.over()) sc_core::wait(inbox_event_ | session_.ended_event());
+    if (session_.over()) return false;
+    const LinkEvent first = inbox_.front();
+    inbox_.erase(inbox_.begin());
+    const int link = first.link;
+    const std::uint8_t control = first.bytes.at(0);
+    if (control == 0 || control == 1) {
+      const Bytes address = read_boot_block(link, 4);
+      if (address.empty()) return false;
+      const Word at = Word(address[0]) | Word(address[1]) << 8 | Word(address[2]) << 16 |
+                      Word(address[3]) << 24;
+      if (control == 0) {
+        const Bytes value = read_boot_block(link, 4);
+        if (value.empty()) return false;
+        core_.memory().write(at, value.data(), 4);
+        ++a.pokes;
+      } else {
+        Bytes value(4);
+        core_.memory().read(at, value.data(), 4);
+        bool sent = false;
+        ports_[link]->start_output(value, [&] {
+          sent = true;
+          inbox_event_.notify(sc_core::SC_ZERO_TIME);
+        });
+        while (!sent && !session_.over()) sc_core::wait(inbox_event_ | session_.ended_event());
+        if (!sent) return false;
+        ++a.peeks;
+      }
+      ports_[link]->start_input(1, [this, link](Bytes b) {
+        post({LinkEvent::Kind::input_done, link, std::move(b)});
+      });
+      continue;
+    }
+    // Booting on `link`: the other links' inputs are withdrawn, and a byte one of them took
+    // meanwhile is theirs to keep for the program.
+    for (int l = 0; l < 4; ++l)
+      if (ports_[l] && l != link) ports_[l]->reset_input();
+    for (const LinkEvent& e : inbox_) ports_[e.link]->unread(e.bytes);
+    inbox_.clear();
+    const Bytes code = read_boot_block(link, control);
+    if (code.empty()) return false;
+    core_.memory().write(core_.mem_start(), code.data(), code.size());
+    a.booted = true;
+    a.boot_link = link;
+    a.boot_bytes = control;
+    core_.advance_to(now_cycle());
+    core_.start_boot_program(Word(control), link);
+    return true;
+  }
+}
+
+// --- running ----------------------------------------------------------------------------------
+
+void IssNode::start_output(int link, std::vector<std::uint8_t> bytes) {
+  output_busy_[link] = true;
+  core_.request_sync();
+  if (!ports_[link]) return;  // an unconnected link: nothing ever acknowledges
+  requested_.push_back([this, link, b = std::move(bytes)]() mutable {
+    ports_[link]->start_output(std::move(b), [this, link] {
+      post({LinkEvent::Kind::output_done, link, {}});
+    });
+  });
+}
+
+void IssNode::start_input(int link, Word count) {
+  input_busy_[link] = true;
+  core_.request_sync();
+  if (!ports_[link]) return;
+  requested_.push_back([this, link, count] {
+    ports_[link]->start_input(count, [this, link](Bytes b) {
+      post({LinkEvent::Kind::input_done, link, std::move(b)});
+    });
+  });
+}
+
+bool IssNode::input_pending(int link) const {
+  return ports_[link] && ports_[link]->input_pending();
+}
+
+void IssNode::watch_input(int link, bool on) {
+  watching_[link] = on;
+  if (!ports_[link]) return;
+  if (on) {
+    core_.request_sync();
+    requested_.push_back([this, link] {
+      if (watching_[link])
+        ports_[link]->watch([this, link] { post({LinkEvent::Kind::arrived, link, {}}); });
+    });
+  } else {
+    ports_[link]->unwatch();
+  }
+}
+
+void IssNode::reset(int link, bool output) {
+  if (output) {
+    output_busy_[link] = false;
+    if (ports_[link]) ports_[link]->reset_output();
+  } else {
+    input_busy_[link] = false;
+    watching_[link] = false;
+    if (ports_[link]) ports_[link]->reset_input();
+  }
+}
+
+void IssNode::deliver_link_events() {
+  if (inbox_.empty()) return;
+  if (core_.cycle() < now_cycle()) core_.advance_to(now_cycle());
+  std::vector<LinkEvent> events;
+  events.swap(inbox_);
+  for (LinkEvent& e : events) {
+    switch (e.kind) {
+      case LinkEvent::Kind::output_done:
+        if (!output_busy_[e.link]) break;  // reset meanwhile
+        output_busy_[e.link] = false;
+        core_.output_done(e.link);
+        break;
+      case LinkEvent::Kind::input_done:
+        if (!input_busy_[e.link]) {
+          ports_[e.link]->unread(e.bytes);
+          break;
+        }
+        input_busy_[e.link] = false;
+        core_.input_done(e.link, e.bytes);
+        break;
+      case LinkEvent::Kind::arrived:
+        if (!watching_[e.link]) break;
+        watching_[e.link] = false;
+        core_.input_arrived(e.link);
+        break;
+    }
+  }
+}
+
+void IssNode::start_requested_transfers() {
+  std::vector<std::function<void()>> now;
+  now.swap(requested_);
+  for (auto& start : now) start();
+}
+
+// Each byte a link engine moves takes a memory cycle from the CPU (docs/t800-timing.md 6): the
+// bytes moved at this processor's ends since the last look delay the core by that many.
+void IssNode::charge_dma() {
+  std::int64_t moved = 0;
+  for (const auto& port : ports_)
+    if (port) moved += port->link().dma_bytes_including_now(port->end(), t800::sim_now());
+  const std::int64_t fresh = moved - dma_seen_;
+  dma_seen_ = moved;
+  if (fresh <= 0 || core_.idle()) return;
+  const std::int64_t cycles = fresh * t800::timing::kLinkDmaCyclesPerByte;
+  core_.stall(cycles);
+  session_.account(node_).dma_stall_cycles += cycles;
+}
+
+void IssNode::account() {
+  ProcessorAccount& a = session_.account(node_);
+  a.instructions = core_.instructions();
+  a.cycles = core_.cycle();
+}
+
+void IssNode::wait_until_cycle(std::int64_t cycle) {
+  const sc_core::sc_time target = time_of(cycle);
+  const sc_core::sc_time now = t800::sim_now();
+  if (target > now) sc_core::wait(target - now);
+}
+
+void IssNode::execute(network::Process& p) {
+  ProcessorAccount& a = session_.account(node_);
+  t800::ProcessorActivity& activity = machine_.transputer(node_).activity();
+  const std::int64_t slice =
+      std::max<std::int64_t>(1, std::int64_t(options_.slice_us * 1000 / cycle_ns_));
+  bool busy = false;
+  for (;;) {
+    if (session_.over()) break;
+    deliver_link_events();
+    if (!busy && !core_.idle()) {
+      activity.set_cpu(t800::ProcessorState::compute, {}, t800::sim_now());
+      busy = true;
+    }
+    std::int64_t bound = now_cycle() + slice;
+    if (outstanding()) {
+      const sc_core::sc_time ahead = sc_core::sc_time_to_pending_activity();
+      const double cycles = ahead.to_seconds() * 1e9 / cycle_ns_;
+      if (cycles < double(slice)) bound = now_cycle() + std::int64_t(cycles);
+    }
+    std::int64_t budget = kNever / 2;
+    if (options_.max_instructions > 0) budget = options_.max_instructions - core_.instructions();
+    const StopReason why = core_.run(bound, budget);
+    ++a.synchronisations;
+    charge_dma();
+    account();
+    switch (why) {
+      case StopReason::sync:
+        wait_until_cycle(core_.cycle());
+        start_requested_transfers();
+        break;
+      case StopReason::running:
+        if (core_.cycle() > now_cycle())
+          wait_until_cycle(core_.cycle());
+        else
+          sc_core::wait(sc_core::SC_ZERO_TIME);
+        break;
+      case StopReason::limit:
+        wait_until_cycle(core_.cycle());
+        a.instruction_limit = true;
+        session_.end(fmt::format("{} reached the instruction limit ({})", machine_.node_name(node_),
+                                 options_.max_instructions));
+        break;
+      case StopReason::halted:
+        wait_until_cycle(core_.cycle());
+        a.halt = core_.halt_report();
+        activity.set_cpu(t800::ProcessorState::idle, {}, t800::sim_now());
+        return;
+      case StopReason::idle: {
+        wait_until_cycle(core_.cycle());
+        start_requested_transfers();
+        if (busy) activity.set_cpu(t800::ProcessorState::idle, {}, t800::sim_now());
+        busy = false;
+        const auto timer = core_.next_timer_cycle();
+        if (!inbox_.empty()) break;
+        if (!timer && !outstanding()) {
+          a.waiting = core_.waiting();
+          if (a.waiting.empty()) return;  // every process has ended: nothing can happen any more
+        }
+        p.set_status_text(describe_waiting());
+        if (timer) {
+          const sc_core::sc_time due = time_of(*timer), now = t800::sim_now();
+          if (due > now) sc_core::wait(due - now, inbox_event_ | session_.ended_event());
+          // Woken by the timer, by a link, or by the session's end.
+          core_.advance_to(t800::sim_now() >= due ? std::max(*timer, now_cycle()) : now_cycle());
+        } else {
+          sc_core::wait(inbox_event_ | session_.ended_event());
+        }
+        a.waiting.clear();
+        break;
+      }
+    }
+  }
+  if (busy) activity.set_cpu(t800::ProcessorState::idle, {}, t800::sim_now());
+  account();
+  a.waiting = core_.waiting();
+}
+
+}  // namespace workloads::boot

@@ -1,0 +1,87 @@
+// A transputer of the network running real machine code: the instruction-set simulator's core
+// (t800/iss/core.hpp) driven by a SystemC thread, its link engines on the link model (LinkPort).
+//
+// At reset it waits on every link, as the chip does: a first byte 0 pokes a word, 1 peeks one, and
+// n >= 2 loads the n bytes that follow at MemStart and runs them (t800-iss.md, "Booting from a
+// link").
+//
+// Time: the core runs ahead on its own clock and stops where the world outside matters: when it
+// starts a link transfer (which starts at the core's cycle), when it has nothing to run, and, while
+// a transfer or an ALT's link guard of its own is outstanding, at the next instant anything else in
+// the simulation is due (so a transfer's end or an arrival is seen at the first instruction
+// boundary after it, as the chip sees it). With nothing outstanding nothing outside can change what
+// it does, and it runs ahead in slices of simulated time that only let SystemC's clock keep up.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "network/machine.hpp"
+#include "t800/iss/core.hpp"
+#include "workloads/boot/boot_session.hpp"
+#include "workloads/boot/link_port.hpp"
+
+namespace workloads::boot {
+
+struct IssNodeOptions {
+  std::int64_t installed_bytes = 2 << 20;  // from MostNeg, on-chip RAM included
+  t800::iss::AddressPolicy policy = t800::iss::AddressPolicy::wrap;
+  std::int64_t max_instructions = 0;  // per processor; 0: no limit
+  double slice_us = 1000;             // the run-ahead slice with nothing outstanding
+};
+
+class IssNode : public t800::iss::LinkEngine {
+ public:
+  IssNode(network::Machine& machine, int node, BootSession& session, const IssNodeOptions& options);
+
+  // The body of the node's process.
+  void run(network::Process& p);
+
+  void start_output(int link, std::vector<std::uint8_t> bytes) override;
+  void start_input(int link, t800::iss::Word count) override;
+  bool input_pending(int link) const override;
+  void watch_input(int link, bool on) override;
+  void reset(int link, bool output) override;
+
+  const t800::iss::Core& core() const { return core_; }
+
+ private:
+  struct LinkEvent {
+    enum class Kind { output_done, input_done, arrived } kind;
+    int link = 0;
+    Bytes bytes;
+  };
+
+  bool boot(network::Process& p);
+  Bytes read_boot_block(int link, std::int64_t count);
+  void execute(network::Process& p);
+  void deliver_link_events();
+  void start_requested_transfers();
+  void charge_dma();
+  void account();
+  void wait_until_cycle(std::int64_t cycle);
+  void wait_for_link_or(const sc_core::sc_time* timeout);
+  std::int64_t now_cycle() const;
+  sc_core::sc_time time_of(std::int64_t cycle) const;
+  void post(LinkEvent e);
+
+  network::Machine& machine_;
+  int node_;
+  BootSession& session_;
+  IssNodeOptions options_;
+  t800::iss::Core core_;
+  double cycle_ns_;
+  std::array<std::unique_ptr<LinkPort>, 4> ports_;
+  std::vector<LinkEvent> inbox_;
+  sc_core::sc_event inbox_event_;
+  std::vector<std::function<void()>> requested_;  // transfers to start at the core's cycle
+  // Transfers and link watches under way, by link: while any is, outside events are due.
+  std::array<bool, 4> output_busy_{}, input_busy_{}, watching_{};
+  bool outstanding() const;
+  std::string describe_waiting() const;
+  std::int64_t dma_seen_ = 0;
+};
+
+}  // namespace workloads::boot

@@ -1,0 +1,78 @@
+// One end of a link as a booted transputer's link engines see it: an output moves a block of bytes
+// and ends when the last is acknowledged; an input takes the next n bytes, however the other end
+// split them into outputs. Both run on the link model (t800/link.hpp), which times them: a block
+// is one message, so its packets, acknowledges, closed form and faults are the link's own.
+//
+// Flow control is per message (U): the link model delivers a message whole to the first input
+// armed for it, so when an input asks for fewer bytes than the sender's block holds, the rest is
+// acknowledged at once and kept here for the next input, where the chip would hold the sender
+// back byte by byte. A sender and a receiver that agree on their blocks (a channel protocol, a
+// loader reading what the host sends) are timed exactly.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <systemc>
+
+#include "t800/link.hpp"
+
+namespace workloads::boot {
+
+using Bytes = std::vector<std::uint8_t>;
+
+// The payload of a booted program's messages, registered for link faults (t800/payload_bytes.hpp):
+// a corrupted byte changes what the receiver reads.
+void register_byte_payload();
+
+class LinkPort {
+ public:
+  // Spawns the port's two SystemC threads; call at or before the start of the simulation.
+  LinkPort(t800::Link& link, int end, const std::string& name);
+
+  // Each calls `done` from the port's thread at the simulated time the transfer ends. One transfer
+  // per direction at a time.
+  void start_output(Bytes bytes, std::function<void()> done);
+  void start_input(std::int64_t count, std::function<void(Bytes)> done);
+  // A byte is here, or a sender has started a block (what an ALT's enabled link guard sees).
+  bool input_pending() const;
+  // `arrived` is called once, when input_pending() becomes true; replaces any earlier watch.
+  void watch(std::function<void()> arrived);
+  void unwatch();
+  // resetch: the transfer in that direction is abandoned (its callback is never called). A block
+  // already on the wire is still delivered to the link; an abandoned input's bytes stay here for
+  // the next input.
+  void reset_output();
+  void reset_input();
+  // Bytes taken that were not for the taker (a boot byte on a link that lost the race to boot):
+  // the next input gets them first.
+  void unread(const Bytes& bytes) { buffer_.insert(buffer_.begin(), bytes.begin(), bytes.end()); }
+
+  bool output_busy() const { return bool(output_done_); }
+  bool input_busy() const { return bool(input_done_); }
+  std::int64_t input_wanted() const { return input_done_ ? wanted_ : 0; }
+  std::int64_t buffered() const { return std::int64_t(buffer_.size()); }
+  t800::Link& link() { return link_; }
+  int end() const { return end_; }
+
+ private:
+  void output_thread();
+  void input_thread();
+
+  t800::Link& link_;
+  int end_;
+  std::string name_;
+  Bytes output_;
+  std::function<void()> output_done_;
+  sc_core::sc_event output_started_;
+  std::int64_t wanted_ = 0;
+  std::function<void(Bytes)> input_done_;
+  std::function<void()> arrived_;
+  std::deque<std::uint8_t> buffer_;
+  sc_core::sc_event input_changed_;
+};
+
+}  // namespace workloads::boot
