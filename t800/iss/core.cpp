@@ -71,6 +71,10 @@ StopReason Core::run(std::int64_t until, std::int64_t max_instructions) {
 
 void Core::step(const Decoded& d) {
   const Word at = r_.iptr;
+  if (!d.defined || !processor_.timing->has(d.op)) [[unlikely]] {
+    refuse(d);
+    return;
+  }
   TimedStep t;
   t.op = d.op;
   t.prefix_cycles = d.prefix_cycles;
@@ -78,18 +82,6 @@ void Core::step(const Decoded& d) {
   t.address = at;
   stepper_.set_code_external(memory_.external(at));
   r_.iptr = at + d.bytes;
-  if (!d.defined) {
-    r_.iptr = at;
-    undefined(d, d.bytes > 16 ? "a prefix chain of more than 16 bytes"
-                              : fmt::format("undefined operation #{:X}", d.operand));
-    return;
-  }
-  if (!processor_.timing->has(d.op)) {
-    r_.iptr = at;
-    undefined(d, fmt::format("{} is not an instruction of the {}", isa::mnemonic(d.op),
-                             processor_.timing->family));
-    return;
-  }
   try {
     execute(d, t);
   } catch (const MemoryFault& fault) {
@@ -99,7 +91,18 @@ void Core::step(const Decoded& d) {
   }
   ++instructions_;
   stepper_.step(t);
-  if (r_.error && r_.halt_on_error && !halt_) halt("HaltOnError: Error set by " + error_by_, at);
+  if (r_.error && r_.halt_on_error && !halt_) [[unlikely]]
+    halt("HaltOnError: Error set by " + error_by_, at);
+}
+
+// Out of line (it formats messages): step() runs for every instruction.
+void Core::refuse(const Decoded& d) {
+  if (!d.defined)
+    undefined(d, d.bytes > 16 ? "a prefix chain of more than 16 bytes"
+                              : fmt::format("undefined operation #{:X}", d.operand));
+  else
+    undefined(d, fmt::format("{} is not an instruction of the {}", isa::mnemonic(d.op),
+                             processor_.timing->family));
 }
 
 void Core::undefined(const Decoded&, const std::string& what) {

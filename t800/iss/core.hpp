@@ -131,6 +131,7 @@ class Core {
   void execute(const Decoded& d, TimedStep& t);
   void operate(const Decoded& d, TimedStep& t);
   void fpu_operate(isa::Op op, TimedStep& t);
+  [[gnu::noinline, gnu::cold]] void refuse(const Decoded& d);
   void undefined(const Decoded& d, const std::string& what);
   void halt(const std::string& reason, Word iptr);
   void set_error(const char* by);

@@ -11,12 +11,6 @@ namespace t800 {
 
 using isa::Op;
 
-int InstructionTiming::cycles_for(std::int64_t param, bool real64) const {
-  const int base = (real64 && cycles_double) ? cycles_double : cycles;
-  if (when_set) return param ? when_set : base;
-  return base + per_param * static_cast<int>(param);
-}
-
 namespace {
 
 struct Row {

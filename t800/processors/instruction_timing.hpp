@@ -46,7 +46,12 @@ struct InstructionTiming {
   int data_words_per_param = 0;
 
   // The cycles for a given parameter and operand precision.
-  int cycles_for(std::int64_t param, bool real64) const;
+  // Inline: the instruction-set simulator asks once per instruction it executes.
+  int cycles_for(std::int64_t param, bool real64) const {
+    const int base = (real64 && cycles_double) ? cycles_double : cycles;
+    if (when_set) return param ? when_set : base;
+    return base + per_param * static_cast<int>(param);
+  }
   int words_for(std::int64_t param) const { return data_words + data_words_per_param * int(param); }
 };
 

@@ -29,8 +29,8 @@ std::int64_t TimingStepper::Bus::access(std::int64_t at, int words) {
   return at;
 }
 
-std::int64_t TimingStepper::Fetcher::ready(std::int64_t begin, std::int64_t end, std::int64_t at) {
-  if (!external_) return at;
+std::int64_t TimingStepper::Fetcher::ready_external(std::int64_t begin, std::int64_t end,
+                                                    std::int64_t at) {
   const std::int64_t first = begin / 4, last = (end - 1) / 4;
   if (words_.empty() || first < first_) {
     words_.clear();
@@ -45,24 +45,14 @@ std::int64_t TimingStepper::Fetcher::ready(std::int64_t begin, std::int64_t end,
   return std::max(at, words_[std::size_t(last - first_)]);
 }
 
-void TimingStepper::Fetcher::started(std::int64_t begin, std::int64_t at) {
-  if (!external_ || begin % 4 != 0) return;
+void TimingStepper::Fetcher::started_external(std::int64_t begin, std::int64_t at) {
   const std::int64_t next = begin / 4 + 1;
   if (first_ + std::int64_t(words_.size()) == next) words_.push_back(bus_.access(at, 1));
-}
-
-void TimingStepper::Fetcher::set_external(bool external) {
-  if (external != external_) restart();
-  external_ = external;
 }
 
 TimingStepper::TimingStepper(const InstructionTimingTable& table, int external_cycles,
                              bool code_external)
     : table_(table), bus_{0, external_cycles}, fetch_(code_external, bus_) {}
-
-void TimingStepper::set_code_external(bool external) {
-  fetch_.set_external(external);
-}
 
 void TimingStepper::wait_until(std::int64_t cycle) {
   iu_ = std::max(iu_, cycle);
@@ -70,11 +60,18 @@ void TimingStepper::wait_until(std::int64_t cycle) {
   bus_.free_at = std::max(bus_.free_at, cycle);
 }
 
+namespace {
+// Out of line, so that step() itself builds no strings and keeps a small frame: the ISS calls it
+// for every instruction.
+[[noreturn, gnu::noinline, gnu::cold]] void no_such_instruction(const char* family, isa::Op op) {
+  throw std::logic_error("timing: the " + std::string(family) + " has no " +
+                         std::string(isa::mnemonic(op)) + " instruction");
+}
+}  // namespace
+
 InstructionTime TimingStepper::step(const TimedStep& in) {
   const InstructionTiming& t = table_[in.op];
-  if (!t.defined)
-    throw std::logic_error("timing: the " + std::string(table_.family) + " has no " +
-                           std::string(isa::mnemonic(in.op)) + " instruction");
+  if (!t.defined) no_such_instruction(table_.family, in.op);
   const int cycles = t.cycles_for(in.param, in.real64) * int(in.rows);
   const bool uses_fpu = t.unit != Unit::integer;
 

@@ -57,7 +57,7 @@ class TimingStepper {
   // Control went elsewhere (a jump taken, a call, a process switch): the prefetch buffer is empty
   // and the next instruction's code is fetched from its own address, as at a sequence's start.
   void restart_fetch() { fetch_.restart(); }
-  void set_code_external(bool external);
+  void set_code_external(bool external) { fetch_.set_external(external); }
   // Neither unit starts anything before `cycle` (the processor waited, idle or descheduled).
   void wait_until(std::int64_t cycle);
 
@@ -80,14 +80,24 @@ class TimingStepper {
    public:
     Fetcher(bool external, Bus& bus) : external_(external), bus_(bus) {}
     // The instruction in [begin, end) may start at `at`; when its code is in.
-    std::int64_t ready(std::int64_t begin, std::int64_t end, std::int64_t at);
+    // (Code on chip, the common case, is decided inline: the ISS asks for every instruction.)
+    std::int64_t ready(std::int64_t begin, std::int64_t end, std::int64_t at) {
+      return external_ ? ready_external(begin, end, at) : at;
+    }
     // The instruction starting at `begin` began at `at`: if it starts a new word, the word after
     // it may now be fetched.
-    void started(std::int64_t begin, std::int64_t at);
+    void started(std::int64_t begin, std::int64_t at) {
+      if (external_ && begin % 4 == 0) started_external(begin, at);
+    }
     void restart() { words_.clear(); }
-    void set_external(bool external);
+    void set_external(bool external) {
+      if (external != external_) restart();
+      external_ = external;
+    }
 
    private:
+    std::int64_t ready_external(std::int64_t begin, std::int64_t end, std::int64_t at);
+    void started_external(std::int64_t begin, std::int64_t at);
     bool external_;
     Bus& bus_;
     std::int64_t first_ = 0;          // the code word words_.front() is for
