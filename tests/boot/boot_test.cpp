@@ -33,6 +33,15 @@ TEST(Boot, AnExitStatusThatIsNotTheToolsetsIsTheExitCode) {
   EXPECT_EQ(b.output.exit_code, 7) << b.output.out;
 }
 
+TEST(Boot, TheArgumentsAfterTwoDashesAreTheProgramsCommandLine) {
+  const auto dir = scratch("echo");
+  const std::string file = assemble(dir, "echo", example_with("echo.s", {}));
+  ASSERT_FALSE(file.empty());
+  const Booted b = boot(dir, file, "-- hello there");
+  EXPECT_EQ(b.output.exit_code, 0) << b.output.out;
+  EXPECT_EQ(b.output.out.rfind("hello there", 0), 0u) << b.output.out;  // SP.WRITE, first
+}
+
 // Every processor of the chain is booted by its neighbour through the chip's boot protocol, runs
 // the same loop, and the sum of the processors that ran comes back as the exit status.
 TEST(Boot, AChainBootsEveryProcessorThroughItsNeighbour) {
