@@ -80,6 +80,16 @@ Scene boot_scene(const BootArgs& args) {
   scene.workload.set("memory", args.memory);
   scene.workload.set("addressing", std::string(args.strict ? "strict" : "wrap"));
   scene.workload.set("max_instructions", args.max_instructions);
+  // The flags' values against the kind's declared ranges, as a scene's are (tools/scene.cpp).
+  for (const auto& [name, flag] :
+       {std::pair{"memory", "--memory"}, std::pair{"max_instructions", "--max-instructions"}}) {
+    const workloads::ParamSpec* spec = info->find(name);
+    const double value = double(scene.workload.integer(name));
+    if ((spec->min && value < *spec->min) || (spec->max && value > *spec->max))
+      throw std::invalid_argument(fmt::format("{} {}: give {} to {}", flag,
+                                              scene.workload.integer(name), *spec->min,
+                                              std::int64_t(*spec->max)));
+  }
   scene.origins["workload.file"] = {"FILE " + args.file, 0, 0};
   scene.origins["workload.host_dir"] = {"--host-dir", 0, 0};
   scene.origins["workload.memory"] = {"--memory", 0, 0};

@@ -24,6 +24,9 @@ using boot::Bytes;
 
 // A boot file larger than any memory a T800 can address is not a boot file.
 constexpr std::int64_t kMaxBootFileBytes = std::int64_t(1) << 32;
+// Every processor's memory is host memory: the whole network's is bounded well inside what a
+// 24 GB host holds beside the simulator.
+constexpr std::int64_t kMaxSimulatedMemory = std::int64_t(16) << 30;
 
 Bytes read_boot_file(const std::string& path) {
   std::error_code ec;
@@ -97,6 +100,15 @@ class BootWorkload : public Workload {
                          "boot: the network has no host link to boot through; give the "
                          "topology a `host = \"PROCESSOR.linkN\"`");
     options_.installed_bytes = c.params.integer("memory");
+    const std::int64_t processors = std::int64_t(c.topology.processors.size());
+    if (options_.installed_bytes * processors > kMaxSimulatedMemory)
+      throw SettingError(
+          {"workload.memory"},
+          fmt::format("workload.memory: {} processors of {} bytes each is {} GiB of simulated "
+                      "memory, more than the {} GiB this simulator holds; give each less",
+                      processors, options_.installed_bytes,
+                      double(options_.installed_bytes * processors) / double(1 << 30),
+                      kMaxSimulatedMemory >> 30));
     options_.policy = c.params.text("addressing") == "strict" ? t800::iss::AddressPolicy::strict
                                                               : t800::iss::AddressPolicy::wrap;
     options_.max_instructions = c.params.integer("max_instructions");
@@ -205,7 +217,7 @@ const Registration registered_boot{
          {"args", T::text, std::string{}, "the program's command line, blank-separated", {}, {}, {}},
          {"memory", T::integer, std::int64_t{2} << 20,
           "bytes of memory from MostNeg on each processor, on-chip RAM included", 4096,
-          double(std::int64_t(1) << 32), {}},
+          double(std::int64_t(1) << 31), {}},
          {"addressing", T::text, std::string{"wrap"},
           "\"wrap\" (addresses modulo the memory, as boards decode them) or \"strict\" (an access "
           "outside halts the processor)", {}, {}, {"wrap", "strict"}},
