@@ -27,6 +27,7 @@ struct CodeUnit {
   std::vector<ArrayDecl> arrays;  // the arrays its Region::array accesses index
   int code_bytes = 0;             // its code in memory, every piece once (a loop's body once)
   int constant_bytes = 0;         // its table of REAL constants
+  std::vector<double> constants;  // that table's values, in order (REAL32 ones are floats)
   int workspace_words = 0;        // its frame: locals, temporaries, loop control, call linkage
   std::vector<const CodeUnit*> routines;  // library routines it calls (their code is the library's)
 

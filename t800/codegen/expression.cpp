@@ -231,7 +231,9 @@ ExpressionEmitter::Plan ExpressionEmitter::plan(int n) {
     p.how = Plan::How::combined;
     p.second = memory_operand(p.right) ? p.right : p.left;
     p.first = p.second == p.right ? p.left : p.right;
-    p.need = need(p.first);
+    // fpldnladd/fpldnlmul push the memory operand and pop it with the result: FC is undefined
+    // after them (CWG), so they need a second register even when the first operand needs one.
+    p.need = std::max(need(p.first), 2);
   } else if (memory_operand(p.right)) {
     p.how = Plan::How::memory_second;
     p.first = p.left;
@@ -601,6 +603,12 @@ void ExpressionEmitter::test(int comparison, bool outcome, int event) {
 
 int ExpressionEmitter::constant_bytes() const {
   return int(constants_.size()) * (real64_ ? 8 : 4);
+}
+
+std::vector<double> ExpressionEmitter::constant_table() const {
+  std::vector<double> table(constants_.size());
+  for (const auto& [value, place] : constants_) table[std::size_t(place)] = value;
+  return table;
 }
 
 // ---- Without an FPU (a T414): every REAL operation a call of the run-time library ----

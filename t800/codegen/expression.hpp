@@ -43,6 +43,7 @@ class ExpressionEmitter {
   void test(int comparison, bool outcome, int event);
 
   int constant_bytes() const;
+  std::vector<double> constant_table() const;  // the values, by their place in the table
   bool uses_constants() const { return uses_constants_; }
 
  private:

@@ -47,8 +47,14 @@ std::map<std::size_t, LoopShape> loop_shapes(const Recording& r) {
 // Code being emitted for one body: the top level, or one iteration of a loop.
 struct Body {
   std::vector<CodeRun> runs;
-  isa::Sequence open;    // straight-line code not yet closed into a run
-  int static_bytes = 0;  // bytes of code this body occupies in memory
+  isa::Sequence open;  // straight-line code not yet closed into a run
+  // Bytes from the body's first instruction to where its code continues: a loop inside counts
+  // as its last iteration, the one the processor falls through from (each iteration's code starts
+  // at the loop's first address).
+  int static_bytes = 0;
+  // What the loops inside occupy beyond that: their largest iteration's code less their last's.
+  int extra_bytes = 0;
+  int footprint() const { return static_bytes + extra_bytes; }  // its code in memory
   void flush(const std::string& label) {
     if (open.empty()) return;
     runs.push_back({label, std::move(open), 1});
@@ -77,7 +83,8 @@ struct OpenLoop {
   int depth = 0;
   LoopShape shape;
   std::int64_t iteration = 0;  // iterations finished
-  int max_static = 0;          // the largest iteration's code
+  int max_footprint = 0;       // the largest iteration's code in memory
+  int last_static = 0;         // the last iteration's, to where the code after the loop is
   std::vector<CodeRun> group;  // the code of the current group of identical iterations
   std::int64_t group_first = 0, group_size = 0;
 };
@@ -112,8 +119,9 @@ class Generator : public EmitSink {
     unit.real64 = r_.real64();
     unit.runs = std::move(top.runs);
     unit.arrays = r_.arrays();
-    unit.code_bytes = top.static_bytes;
+    unit.code_bytes = top.footprint();
     unit.constant_bytes = expressions_.constant_bytes();
+    unit.constants = expressions_.constant_table();
     unit.workspace_words = frame_.words();
     unit.routines = routines_;
     return unit;
@@ -123,6 +131,9 @@ class Generator : public EmitSink {
   void emit(Instruction in) override {
     Body& b = bodies_.back();
     b.static_bytes += in.bytes();
+    // A taken cj jumps over the code of the branch not taken: it is in memory all the same (the
+    // loop's back offset and the unit's size count it).
+    if (in.op == Op::cj && in.param) b.static_bytes += int(in.operand);
     b.open.push_back(std::move(in));
   }
 
@@ -166,7 +177,7 @@ class Generator : public EmitSink {
 
   const Target& target() const override { return target_; }
 
-  Sizes sizes() const { return {bodies_.front().static_bytes, frame_.words()}; }
+  Sizes sizes() const { return {bodies_.front().footprint(), frame_.words()}; }
 
  private:
   static MemoryRef workspace() { return {Region::workspace, -1}; }
@@ -191,10 +202,23 @@ class Generator : public EmitSink {
       if (++parameters > 3)
         emit({Op::stl, parameters - 4, 0, false, workspace(), "caller: parameter"});
     }
-    emit({Op::call, 64, 0, false, workspace(), "call " + r_.name()});
+    constexpr std::int64_t kCallDistance = 64;  // from the call's successor to the PROC
+    emit({Op::call, kCallDistance, 0, false, workspace(), "call " + r_.name()});
     emit({Op::ajw, -(previous_.frame_words - 4), 0, false, {}, "enter " + r_.name()});
     if (expressions_.uses_constants()) {
-      emit({Op::ldc, previous_.code_bytes, 0, false, {}, "constant table"});
+      // ldpi: A := the address of ldpi's successor + A (CWG). The table is past the code and
+      // word aligned: fpldnlsn/fpldnldb (and the fpldnl*op forms) address whole words, the
+      // address's low two bits are not used, so a table off a word boundary would be read from
+      // the wrong bytes. The unit's first byte is word aligned (as a compiled module's is), and
+      // the PROC is kCallDistance bytes after the call; `here` is where this ldc is, from there.
+      const std::int64_t here = bodies_.back().static_bytes + kCallDistance;
+      const auto table = [&](std::int64_t distance) {  // the table's offset in the unit
+        return here + isa::encoded_bytes(Op::ldc, distance) + isa::encoded_bytes(Op::ldpi) +
+               distance;
+      };
+      std::int64_t distance = previous_.code_bytes;
+      while (table(distance) % 4 != 0) ++distance;
+      emit({Op::ldc, distance, 0, false, {}, "constant table"});
       emit({Op::ldpi, 0, 0, false, {}, "constant table"});
       emit({Op::stl, frame_.constant_table(), 0, false, workspace(), "constant table"});
     }
@@ -297,10 +321,17 @@ class Generator : public EmitSink {
       const int control = frame_.loop_index(l.depth);
       const bool looping = l.iteration + 1 < l.shape.count;
       emit({Op::ldlp, control, 0, false, {}, "SEQ " + index_name(l.depth) + ": end"});
-      emit({Op::ldc, b.static_bytes + 2, 0, false, {}, "back to the body"});
+      // lend jumps back from its successor by A: the body so far, this ldc (whose length
+      // depends on its own operand) and lend itself.
+      const int lend_bytes = isa::encoded_bytes(Op::lend);
+      std::int64_t back = b.static_bytes + lend_bytes + 1;
+      while (b.static_bytes + isa::encoded_bytes(Op::ldc, back) + lend_bytes != back)
+        back = b.static_bytes + isa::encoded_bytes(Op::ldc, back) + lend_bytes;
+      emit({Op::ldc, back, 0, false, {}, "back to the body"});
       emit({Op::lend, 0, looping ? 1 : 0, false, workspace(), looping ? "loop" : "exit"});
       b.flush(label());
-      l.max_static = std::max(l.max_static, b.static_bytes);
+      l.max_footprint = std::max(l.max_footprint, b.footprint());
+      l.last_static = b.static_bytes;
       close_iteration(l, std::move(b.runs));
       ++l.iteration;
       bodies_.back() = Body{};
@@ -339,11 +370,15 @@ class Generator : public EmitSink {
     iteration(true);
     OpenLoop& l = loops_.back();
     flush_group(l);
-    const int loop_static = l.max_static;
+    const int loop_static = l.last_static, loop_footprint = l.max_footprint;
     loops_.pop_back();
     bodies_.pop_back();
     started_iteration_.pop_back();
+    // The enclosing body continues after the last iteration's lend (its back offset, if it is
+    // an iteration itself, must reach over what that iteration's code is, CWG lend), while the
+    // loop holds its largest iteration's code.
     bodies_.back().static_bytes += loop_static;
+    bodies_.back().extra_bytes += loop_footprint - loop_static;
   }
 
   const Recording& r_;

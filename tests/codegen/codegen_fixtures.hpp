@@ -74,6 +74,14 @@ inline int deepest_fp_stack(const CodeUnit& unit) {
         case Op::fpi32tor64:
           ++depth;
           break;
+        case Op::fpldnladdsn:
+        case Op::fpldnladddb:
+        case Op::fpldnlmulsn:
+        case Op::fpldnlmuldb:
+          // Load and operate: the operand is pushed, then the operation pops it with the result
+          // (CWG), so for that moment the stack holds one more.
+          deepest = std::max(deepest, depth + 1);
+          break;
         case Op::fpstnlsn:
         case Op::fpstnldb:
         case Op::fpadd:
