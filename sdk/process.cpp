@@ -1,6 +1,8 @@
 #include "t800sim/process.hpp"
 
+#include <cstdint>
 #include <stdexcept>
+#include <string>
 #include <typeindex>
 
 #include <systemc>
@@ -13,6 +15,12 @@
 #include "t800sim/kernel.hpp"
 
 namespace t800sim {
+
+namespace {
+// The most bytes one communication carries: a T800 message's count is one word, which the
+// compiler's code loads as an INT (ldc), so 2^31 - 1.
+constexpr std::int64_t kMaxMessageBytes = 2147483647;
+}  // namespace
 
 void detail::register_value_bytes(const std::type_info& type, FlipValueByte flip) {
   t800::register_payload_bytes(std::type_index(type), flip);
@@ -92,6 +100,11 @@ void Process::fault_recovered(const std::vector<std::string>& path, const std::s
 
 void Process::Wire::send(std::int64_t bytes, std::any value) {
   if (failed_) return;
+  if (bytes < 0 || bytes > kMaxMessageBytes)
+    throw std::logic_error("process " + process_.name() + ": a message of " +
+                           std::to_string(bytes) + " bytes on channel " + channel_.name +
+                           ": a T800 message is 0 to " + std::to_string(kMaxMessageBytes) +
+                           " bytes (its count is one word, loaded as an INT); send it in parts");
   t800::Message m{bytes, std::move(value), label_.empty() ? channel_.name : label_};
   if (deadline_us_ < 0)
     process_.out(channel_, std::move(m));

@@ -10,7 +10,9 @@
 #include <fmt/format.h>
 
 #include "tools/commands.hpp"
+#include "tools/input_file.hpp"
 #include "tools/sweep_result.hpp"
+#include "workloads/run/output_file.hpp"
 
 namespace tools {
 
@@ -43,6 +45,7 @@ std::vector<std::string> result_files(const std::vector<std::string>& inputs) {
 }
 
 PointResult read_point(const std::string& file) {
+  require_regular_input(file, file, "a JSON result written by sweep --point");
   std::ifstream in(file);
   std::stringstream text;
   text << in.rdbuf();
@@ -63,6 +66,7 @@ std::vector<std::string> keys_of(const PointResult& p) {
 }
 
 int merge(const MergeArgs& a) {
+  workloads::check_output_path(a.output, "-o");
   ResultsTable table;
   std::map<std::string, std::size_t>
       row_of;  // a point given twice keeps its ok result, else the last
@@ -84,10 +88,7 @@ int merge(const MergeArgs& a) {
       table.rows[at->second] = std::move(p);
     }
   }
-  std::ofstream out(a.output, std::ios::trunc);
-  out << results_csv(table);
-  out.close();
-  if (!out) throw std::invalid_argument("cannot write " + a.output);
+  workloads::write_output_file(a.output, results_csv(table), "-o");
   const auto failed =
       std::count_if(table.rows.begin(), table.rows.end(), [](auto& r) { return !r.ok(); });
   std::cerr << fmt::format("merge: {} points ({} failed) into {}\n", table.rows.size(), failed,

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <thread>
@@ -26,6 +27,8 @@
 #include "tools/sweep_result.hpp"
 #include "tools/sweep_runner.hpp"
 #include "tools/sweep_spec.hpp"
+#include "tools/table_lock.hpp"
+#include "workloads/run/output_file.hpp"
 
 namespace tools {
 
@@ -42,6 +45,7 @@ struct SweepArgs {
   double timeout_s = 0;
   std::string emit_jobs, jobs_dir;
   int point = -1;  // run only this point (what one emitted job does)
+  bool point_given = false;
 };
 
 struct Sweep {
@@ -126,14 +130,21 @@ std::vector<std::string> run_argv(const SweepArgs& a, const SweepPoint& point) {
   return argv;
 }
 
+// Written beside and renamed over (workloads::OutputFile): an interrupted write never leaves half a
+// table, a link stays a link, a device is written through.
 void write_file(const std::string& flag, const std::string& path, const std::string& text) {
-  // Written beside and renamed over: an interrupted write never leaves half a table.
-  const std::string temp = path + ".tmp";
-  std::ofstream out(temp, std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) throw std::invalid_argument(flag + " " + path + ": cannot write it");
-  fs::rename(temp, path);
+  try {
+    workloads::write_output_file(path, text, flag);
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());
+  }
+}
+
+// One finished point's row at the end of the table, opened anew each time: whoever replaced the
+// file since (another sweep's final rewrite) is appended to, not an unlinked old copy.
+void append_row(const std::string& path, const std::string& row) {
+  std::ofstream append(path, std::ios::app);
+  append << row << std::flush;
 }
 
 // The ok rows of an earlier run into the same file; its points are not run again.
@@ -154,23 +165,56 @@ std::vector<PointResult> earlier_results(const std::string& path,
   return kept;
 }
 
-// Every point of this sweep in order (new results or earlier ones), then earlier rows outside this
-// sweep.
-ResultsTable final_table(const Sweep& s, const std::vector<PointResult>& earlier,
+// The table on disk now, with every row it holds (what another writer added since this sweep read
+// it included); this sweep's own view when the file is gone or no longer a table of these keys.
+std::vector<PointResult> rows_on_disk(const std::string& path, const std::vector<std::string>& keys,
+                                      const std::vector<PointResult>& own_view) {
+  if (!fs::exists(path)) return own_view;
+  try {
+    ResultsTable disk = read_results_csv(path);
+    std::vector<std::string> a = disk.keys, b = keys;
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    if (a == b) return std::move(disk.rows);
+    std::cerr << "sweep: -o " << path << " now holds a sweep over other parameters; rewriting it "
+              << "from this sweep's rows\n";
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "sweep: -o " << path << " cannot be read back (" << e.what()
+              << "); rewriting it from this sweep's rows\n";
+  }
+  return own_view;
+}
+
+// Every point of this sweep in order, then the other rows on disk in their order. A point's row is
+// this sweep's result unless that failed and the disk has an ok one; among rows on disk for one
+// point (two writers), an ok one, else the last.
+ResultsTable final_table(const Sweep& s, const std::vector<PointResult>& on_disk,
                          const std::map<std::string, PointResult>& fresh) {
   ResultsTable t{s.keys, {}};
   std::map<std::string, const PointResult*> old;
-  for (const PointResult& r : earlier) old[point_id(r.params)] = &r;
+  std::vector<std::string> order;  // the disk's points, first appearance
+  for (const PointResult& r : on_disk) {
+    const std::string id = point_id(r.params);
+    auto at = old.find(id);
+    if (at == old.end()) {
+      order.push_back(id);
+      old[id] = &r;
+    } else if (r.ok() || !at->second->ok()) {
+      at->second = &r;
+    }
+  }
   for (const SweepPoint& p : s.points) {
     const std::string id = point_id(p);
-    if (fresh.count(id))
-      t.rows.push_back(fresh.at(id));
-    else if (old.count(id))
-      t.rows.push_back(*old.at(id));
+    const auto mine = fresh.find(id);
+    const auto theirs = old.find(id);
+    if (mine != fresh.end() && (mine->second.ok() || theirs == old.end() || !theirs->second->ok()))
+      t.rows.push_back(mine->second);
+    else if (theirs != old.end())
+      t.rows.push_back(*theirs->second);
     old.erase(id);
   }
-  for (const PointResult& r : earlier)
-    if (old.count(point_id(r.params))) t.rows.push_back(r);
+  for (const std::string& id : order)
+    if (old.count(id)) t.rows.push_back(*old.at(id));
   for (PointResult& r : t.rows) {  // in this sweep's column order
     SweepPoint ordered;
     for (const std::string& k : s.keys)
@@ -181,8 +225,26 @@ ResultsTable final_table(const Sweep& s, const std::vector<PointResult>& earlier
   return t;
 }
 
+// What a sweep's table is told about who holds it: its pid and command.
+std::string holder_text(const SweepArgs& a) {
+  std::string text = fmt::format("the sweep pid {} (t800sim sweep {}", getpid(), a.scene);
+  for (const std::string& v : a.vary) text += " --vary " + v;
+  return text + ")";
+}
+
+// A results table that is a device, a FIFO or a socket (-o /dev/stdout) is not read back (no points
+// are skipped) nor appended to: the whole table is written through once, at the end.
 int run_sweep(const SweepArgs& a, const Sweep& s) {
-  const std::vector<PointResult> earlier = earlier_results(a.output, s.keys);
+  const workloads::OutputTarget target = workloads::resolve_output(a.output, "-o");
+  std::unique_ptr<TableLock> lock;
+  if (target.replace)
+    lock = std::make_unique<TableLock>(target.file, "-o", holder_text(a));
+  else
+    std::cerr << "sweep: -o " << a.output
+              << " is not a regular file: the table is written to it once, at the end, and no "
+                 "points are skipped\n";
+  const std::vector<PointResult> earlier =
+      target.replace ? earlier_results(target.file, s.keys) : std::vector<PointResult>{};
   std::set<std::string> done;
   for (const PointResult& r : earlier) done.insert(point_id(r.params));
   std::vector<SweepPoint> todo;
@@ -193,10 +255,9 @@ int run_sweep(const SweepArgs& a, const Sweep& s) {
                              s.points.size() - todo.size(), s.points.size(), a.output, todo.size());
 
   // Rows are appended as points finish, so an interrupted sweep keeps them; the end rewrites the
-  // table.
+  // table from what is on disk then, merged with this sweep's results.
   std::map<std::string, PointResult> fresh;
-  write_file("-o", a.output, results_csv(final_table(s, earlier, fresh)));
-  std::ofstream append(a.output, std::ios::app);
+  if (target.replace) write_file("-o", a.output, results_csv(final_table(s, earlier, fresh)));
   std::vector<std::vector<std::string>> commands;
   for (const SweepPoint& p : todo) commands.push_back(run_argv(a, p));
   SweepProgress progress(todo.size(), isatty(STDERR_FILENO));
@@ -206,9 +267,14 @@ int run_sweep(const SweepArgs& a, const Sweep& s) {
   pool.tick = [&] { progress.tick(); };
   pool.done = [&](std::size_t i, const ChildOutcome& outcome) {
     const PointResult r = judge(a, todo[i], outcome, nullptr);
-    append << results_row(r) << std::flush;
+    if (target.replace) append_row(target.file, results_row(r));
     progress.finished(r);
     fresh[point_id(r.params)] = r;
+  };
+  auto final_rows = [&] {
+    std::vector<PointResult> own = earlier;
+    for (const auto& kv : fresh) own.push_back(kv.second);
+    return target.replace ? rows_on_disk(target.file, s.keys, own) : earlier;
   };
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -217,8 +283,7 @@ int run_sweep(const SweepArgs& a, const Sweep& s) {
     // The points that finished are in the file; the running ones were ended and will run again
     // when the same sweep is rerun.
     progress.end();
-    append.close();
-    write_file("-o", a.output, results_csv(final_table(s, earlier, fresh)));
+    write_file("-o", a.output, results_csv(final_table(s, final_rows(), fresh)));
     std::cerr << fmt::format(
         "sweep: {}; {} of {} points finished, in {}; rerun with the same -o to run "
         "the others\n",
@@ -226,8 +291,7 @@ int run_sweep(const SweepArgs& a, const Sweep& s) {
     return 128 + e.signal;
   }
   progress.end();
-  append.close();
-  const ResultsTable table = final_table(s, earlier, fresh);
+  const ResultsTable table = final_table(s, final_rows(), fresh);
   write_file("-o", a.output, results_csv(table));
   const double took =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -242,14 +306,17 @@ int run_point(const SweepArgs& a, const Sweep& s) {
     throw std::invalid_argument(
         fmt::format("--point {}: this sweep has points 0 to {}", a.point, s.points.size() - 1));
   const SweepPoint& point = s.points[std::size_t(a.point)];
+  // The job's directory is made here (emit_jobs names it); the file is checked before the point
+  // runs.
+  if (fs::path(a.output).has_parent_path())
+    fs::create_directories(fs::path(a.output).parent_path());
+  workloads::check_output_path(a.output, "-o");
   PointResult r;
   nlohmann::json report;
   ChildPool pool;
   pool.timeout_s = a.timeout_s;
   pool.done = [&](std::size_t, const ChildOutcome& o) { r = judge(a, point, o, &report); };
   run_children({run_argv(a, point)}, pool);
-  if (fs::path(a.output).has_parent_path())
-    fs::create_directories(fs::path(a.output).parent_path());
   write_file("-o", a.output, point_to_json(r, report).dump() + "\n");
   std::cerr << fmt::format("point {}: {}  {}\n", a.point, point_text(point), r.status);
   return r.ok() ? kExitOk : kExitFailure;
@@ -267,6 +334,7 @@ int emit_jobs(const SweepArgs& a, const Sweep& s) {
   const fs::path dir = fs::absolute(
       a.jobs_dir.empty() ? fs::path(a.emit_jobs).replace_extension("").string() + "-results"
                          : a.jobs_dir);
+  workloads::check_output_path(a.emit_jobs, "--emit-jobs");
   fs::create_directories(dir);
   // The variable keeps SystemC's banner out of the job logs.
   std::string common = "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " + shell_quote(self_executable()) +
@@ -300,14 +368,19 @@ int sweep(const SweepArgs& a) {
   if (a.emit_jobs.empty() && a.output.empty())
     throw std::invalid_argument(
         "-o FILE is required (or --emit-jobs FILE to write the jobs instead)");
-  if (!a.emit_jobs.empty() && a.point >= 0)
+  if (!a.emit_jobs.empty() && a.point_given)
     throw std::invalid_argument("--emit-jobs and --point exclude each other");
+  // An output that cannot be written is found before any point runs.
+  if (!a.emit_jobs.empty())
+    workloads::check_output_path(a.emit_jobs, "--emit-jobs");
+  else if (!a.point_given)
+    workloads::check_output_path(a.output, "-o");
   const Sweep s = plan(a);
   check_scene(a, s);
   // Children print their reports on stdout, which must be pure JSON.
   setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   if (!a.emit_jobs.empty()) return emit_jobs(a, s);
-  if (a.point >= 0) return run_point(a, s);
+  if (a.point_given) return run_point(a, s);
   return run_sweep(a, s);
 }
 
@@ -342,10 +415,13 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--jobs-dir", a->jobs_dir,
                   "where the emitted jobs write their JSON results (default: "
                   "the --emit-jobs file's name + -results)");
-  cmd->add_option("--point", a->point,
-                  "run only point I (0-based; what each emitted job does) and write its "
-                  "JSON result to -o");
-  cmd->callback([a] { run_command([&] { return sweep(*a); }); });
+  auto* point = cmd->add_option("--point", a->point,
+                                "run only point I (0-based; what each emitted job does) and write "
+                                "its JSON result to -o");
+  cmd->callback([a, point] {
+    a->point_given = point->count() > 0;
+    run_command([&] { return sweep(*a); });
+  });
 }
 
 }  // namespace tools

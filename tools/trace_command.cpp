@@ -26,13 +26,13 @@ struct VcdArgs {
 int convert(const VcdArgs& a) {
   const std::vector<TraceRow> rows = read_trace_csv(a.csv);
   workloads::check_output_path(a.output, "-o");
-  const std::filesystem::path temporary =
-      std::filesystem::temp_directory_path() / ("t800sim-" + std::to_string(getpid()) + ".vcd");
-  write_vcd(rows, temporary.string());
-  std::ifstream in(temporary, std::ios::binary);
+  const workloads::ScratchFile temporary(
+      (std::filesystem::temp_directory_path() / ("t800sim-" + std::to_string(getpid()) + ".vcd"))
+          .string());
+  write_vcd(rows, temporary.path());
+  std::ifstream in(temporary.path(), std::ios::binary);
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   in.close();
-  std::filesystem::remove(temporary);
   workloads::write_output_file(a.output, text, "-o");
   return kExitOk;
 }

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <memory>
 
 #include "tools/child_run.hpp"
 #include "tools/trace_format.hpp"
@@ -17,16 +18,22 @@ namespace fs = std::filesystem;
 void write_vcd_through_child(const std::string& csv_text, const std::string& csv_given,
                              const std::string& vcd) {
   std::string csv = csv_given;
+  std::unique_ptr<workloads::ScratchFile> scratch;  // removed on every exit, also by a signal
   if (csv.empty()) {
-    csv = (fs::temp_directory_path() / ("t800sim-trace-" + std::to_string(getpid()) + ".csv"))
-              .string();
+    scratch = std::make_unique<workloads::ScratchFile>(
+        (fs::temp_directory_path() / ("t800sim-trace-" + std::to_string(getpid()) + ".csv"))
+            .string());
+    csv = scratch->path();
     workloads::write_output_file(csv, csv_text, "--trace-vcd (temporary CSV)");
   }
   const ChildOutput child = run_self({"vcd", csv, "-o", vcd});
-  if (csv_given.empty()) fs::remove(csv);
-  if (child.exit_code != 0)
-    throw std::invalid_argument("--trace-vcd " + vcd + ": " +
-                                (child.err.empty() ? "the VCD writer failed" : child.err));
+  if (child.exit_code != 0) {
+    // The child's errors name its own flag; here the file is --trace-vcd's.
+    std::string err = child.err.empty() ? "the VCD writer failed" : child.err;
+    for (auto at = err.find("-o " + vcd); at != std::string::npos; at = err.find("-o " + vcd, at))
+      err.replace(at, 2, "--trace-vcd");
+    throw std::invalid_argument("--trace-vcd " + vcd + ": " + err);
+  }
 }
 
 }  // namespace

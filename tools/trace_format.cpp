@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "tools/input_file.hpp"
 #include "tools/sweep_csv.hpp"
 
 namespace tools {
@@ -114,6 +115,7 @@ std::string trace_chrome_json(const std::vector<TraceRow>& rows) {
 }
 
 std::vector<TraceRow> read_trace_csv(const std::string& path) {
+  require_regular_input(path, path, "a CSV trace written by run --trace-csv");
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(path + ": cannot read it");
   std::string line;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "tests/cli/cli_fixtures.hpp"
 #include "tools/run_inputs.hpp"
@@ -55,3 +56,29 @@ INSTANTIATE_TEST_SUITE_P(Paper, OverlapScene, ::testing::Values(1, 2, 3),
                          [](const auto& info) { return "m" + std::to_string(info.param); });
 
 }  // namespace
+
+// One unknown, inside workload.n's range (1..64): the pipeline solves the 1x1 system (L1 divides,
+// no row goes to level 2) instead of failing to build (issue 27: std::bad_alloc).
+class OneUnknown : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(OneUnknown, IsSolved) {
+  std::vector<std::string> overrides = {"workload.source=random", "workload.n=1"};
+  if (!GetParam().empty()) overrides.push_back(GetParam());
+  const tools::Scene scene = tools::load_scene(
+      std::string(T800SIM_SOURCE_DIR) + "/" + workloads::kEliminationScene, overrides);
+  const workloads::RunReport report = workloads::run(tools::inputs_from(scene));
+  ASSERT_TRUE(report.blocked.empty());
+  const workloads::ResultValue& w = report.workload;
+  EXPECT_EQ(w.get("n")->number(), 1);
+  EXPECT_EQ(w.get("status")->to_json(), "\"ok\"");
+  EXPECT_EQ(w.get("matches_sequential")->to_json(), "true");
+}
+
+INSTANTIATE_TEST_SUITE_P(Structures, OneUnknown,
+                         ::testing::Values("", "workload.overlap=true",
+                                           "workload.growth_check=true"),
+                         [](const auto& info) {
+                           return info.param.empty()     ? std::string("strict")
+                                  : info.param[9] == 'o' ? std::string("overlap")
+                                                         : std::string("growth_check");
+                         });

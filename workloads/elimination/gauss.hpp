@@ -289,7 +289,8 @@ StepCheck<S> check_step(const Rows<S>& rows, const S& bound, const PivotRule& ru
     }
   }
   if (!rule.growth_check()) return check;
-  const std::size_t columns = rows.front().size() - 1;
+  // No rows (the one step of a 1x1 system): nothing grew.
+  const std::size_t columns = rows.empty() ? 0 : rows.front().size() - 1;
   for (std::size_t i : occam::seq<S>(rows.size())) {
     for (std::size_t j : occam::seq<S>(columns)) {
       const S v = magnitude(rows[i][j]);

@@ -232,12 +232,17 @@ class PipelineProgram<T>::Levels {
         [&](auto& rows, auto& o, auto& l) { return elimination::pivot_step(rows, o, rule, l); },
         named("m", m), named("order", order), named("limit", limit));
     declare(nodes.l1, "level1", pivot);
-    auto [row, eliminate] = pieces_.run(
-        "eliminate", [](auto& r, auto& j1) { return elimination::eliminate(r, j1); },
-        named("row", m[1]), named("pivot", step.normalised));
-    for (int e = 0; e < shape.m; ++e)
-      declare(nodes.e[std::size_t(e)], "level2[" + std::to_string(e) + "]", eliminate);
-    Rows<C> rows(std::size_t(n() - 1), row);
+    // One unknown (a 1x1 system) has no row below the pivot: level 2 eliminates nothing and L3
+    // checks no rows.
+    Rows<C> rows;
+    if (n() > 1) {
+      auto [row, eliminate] = pieces_.run(
+          "eliminate", [](auto& r, auto& j1) { return elimination::eliminate(r, j1); },
+          named("row", m[1]), named("pivot", step.normalised));
+      for (int e = 0; e < shape.m; ++e)
+        declare(nodes.e[std::size_t(e)], "level2[" + std::to_string(e) + "]", eliminate);
+      rows.assign(std::size_t(n() - 1), row);
+    }
     C bound = elimination::growth_bound(scale, rule);
     declare(nodes.l3, "level3",
             pieces_
