@@ -1,6 +1,6 @@
-// Every input in the committed fuzz corpus (fuzz/corpus/: what libFuzzer found interesting, and every
-// input that once crashed a reader) goes through the fuzz targets' harness: accepted or refused with a
-// clean error, never anything else (fuzz/harness.hpp).
+// Every input in the committed fuzz corpus (fuzz/corpus/: what libFuzzer found interesting, and
+// every input that once crashed a reader) goes through the fuzz targets' harness: accepted or
+// refused with a clean error, never anything else (fuzz/harness.hpp).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> corpus(const std::string& target) {
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(fs::path(T800SIM_SOURCE_DIR) / "fuzz" / "corpus" / target))
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(T800SIM_SOURCE_DIR) / "fuzz" / "corpus" / target))
     if (entry.is_regular_file()) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
@@ -37,16 +38,26 @@ void replay(const std::string& target, F&& harness) {
   }
 }
 
-TEST(FuzzCorpus, ConfigurationFiles) { replay("config", fuzz::read_config); }
+TEST(FuzzCorpus, ConfigurationFiles) {
+  replay("config", fuzz::read_config);
+}
 
-TEST(FuzzCorpus, SetOverrides) { replay("set", fuzz::apply_overrides); }
+TEST(FuzzCorpus, SetOverrides) {
+  replay("set", fuzz::apply_overrides);
+}
 
 // The instruction-set simulator's inputs (fuzz/iss_harness.hpp): machine code on the ISS, SP
 // request bodies on the SP server, text through the assembler.
-TEST(FuzzCorpus, MachineCode) { replay("decoder", fuzz::run_machine_code); }
+TEST(FuzzCorpus, MachineCode) {
+  replay("decoder", fuzz::run_machine_code);
+}
 
-TEST(FuzzCorpus, SpRequests) { replay("sp", fuzz::serve_sp_requests); }
+TEST(FuzzCorpus, SpRequests) {
+  replay("sp", fuzz::serve_sp_requests);
+}
 
-TEST(FuzzCorpus, AssemblerText) { replay("asm", fuzz::assemble_source); }
+TEST(FuzzCorpus, AssemblerText) {
+  replay("asm", fuzz::assemble_source);
+}
 
 }  // namespace
