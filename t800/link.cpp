@@ -90,21 +90,31 @@ bool Link::quiet() const {
   return true;
 }
 
-Message Link::receive(int to) {
+Message Link::receive(int to, std::int64_t at_most) {
   // Messages to end `to` travel in direction 1 - to.
   const int di = 1 - to;
   Direction& d = dir_[di];
-  arm_input(di);
+  arm_input(di, std::max<std::int64_t>(at_most, 1));
   while (d.delivered.empty()) sc_core::wait(d.delivered_event);
-  Message m = std::move(d.delivered.front());
-  d.delivered.pop_front();
-  ++d.taken;
-  return m;
+  return take_delivered(di);
 }
 
-void Link::arm_input(int di) {
+Message Link::take_delivered(int di) {
+  Direction& d = dir_[di];
+  Piece piece = std::move(d.delivered.front());
+  d.delivered.pop_front();
+  if (piece.last) ++d.taken;
+  return std::move(piece.message);
+}
+
+void Link::arm_input(int di, std::int64_t at_most) {
   Direction& d = dir_[di];
   d.armed = true;
+  d.want = at_most;
+  if (at_most != kWholeMessage) d.taken_in_pieces = true;
+  // A closed form acknowledges every byte of its message: an input that takes only some of them
+  // is served at the packet level, which holds the sender after the last it takes.
+  if (d.closed_form.active && !d.closed_form.armed && at_most < d.closed_form.bytes) hand_over(di);
   if (d.receiving) count_receiver(di);
   if (d.closed_form.active) {
     if (!d.closed_form.armed) {  // the schedule is known from now on
@@ -117,7 +127,7 @@ void Link::arm_input(int di) {
       d.ack_owed = false;
       queue_ack(di);
     }
-    if (d.receiving && d.received == d.incoming.bytes) complete_receive(di);
+    if (input_satisfied(di)) complete_receive(di);
   }
 }
 
@@ -291,13 +301,14 @@ bool Link::send_data_packet(int di) {
 // The arrival of a byte that is not its message's last changes only counts: the bytes received
 // (read at the last) and the DMA cycles (dma_bytes counts a pending arrival from its time). Not
 // with a fault (a byte may be lost), a deadline (resetch), a hand-over, or a T414 (its
-// acknowledge depends on the input being armed when the byte has arrived).
+// acknowledge depends on the input being armed when the byte has arrived), nor where inputs take
+// messages piece by piece (the byte may be a piece's last).
 bool Link::data_end_settled_now(int di) const {
   const Direction& d = dir_[di];
   const Direction& other = dir_[1 - di];
   return !faulted_ && deadline_waits_ == 0 && detect_delay_ < data_packet_ &&
-         d.sent < d.incoming.bytes && !d.closed_form.active && !other.closed_form.active &&
-         !d.in_flight.active && !other.in_flight.active;
+         d.sent < d.incoming.bytes && !d.taken_in_pieces && !d.closed_form.active &&
+         !other.closed_form.active && !d.in_flight.active && !other.in_flight.active;
 }
 
 // The byte of a settled data packet arrives: what finish_data_packet would have done at its end,
@@ -419,7 +430,7 @@ void Link::on_byte_arrived(int di) {
   // A T414 acknowledges after the whole packet: a byte taken by a waiting input is owed its
   // acknowledge even if that input completes (and disarms) before the acknowledge goes out.
   if (d.armed && config_.protocol == LinkProtocol::t414) d.accepted_before_detect = true;
-  if (d.armed && d.received == d.incoming.bytes) complete_receive(di);
+  if (d.armed && input_satisfied(di)) complete_receive(di);
 }
 
 // The receiver's copy of the message now starting: its length and label. Its payload stays in the
@@ -442,14 +453,32 @@ void Link::take_payload(int di) {
   d.payload_with_sender = false;
 }
 
+// The armed input has what it asked for: the rest of the message, or its `want` bytes.
+bool Link::input_satisfied(int di) const {
+  const Direction& d = dir_[di];
+  return d.receiving && (d.received == d.incoming.bytes || d.received - d.given >= d.want);
+}
+
 void Link::complete_receive(int di) {
   Direction& d = dir_[di];
   take_payload(di);
-  Message m = std::move(d.incoming);
-  d.receiving = false;
+  Piece piece;
+  piece.last = d.received == d.incoming.bytes;
+  if (piece.last) {
+    piece.message = std::move(d.incoming);
+    piece.message.bytes -= d.given;
+    if (d.given > 0) piece.message.payload.reset();  // the first piece had it
+    d.receiving = false;
+    d.received = d.given = 0;
+  } else {
+    piece.message.bytes = d.received - d.given;
+    piece.message.label = d.incoming.label;
+    if (d.given == 0) piece.message.payload = d.incoming.payload;
+    d.given = d.received;
+  }
   d.armed = false;
-  d.received = 0;
-  d.delivered.push_back(std::move(m));
+  d.want = kWholeMessage;
+  d.delivered.push_back(std::move(piece));
   d.delivered_event.notify(SC_ZERO_TIME);
   if (d.receiver_counted && end(1 - di)) end(1 - di)->transfer_end();
   d.receiver_counted = false;
@@ -483,6 +512,8 @@ void Link::count_receiver(int di) {
 // comes from the same events as without the run: two processes released at one instant are then
 // queued in the same order.
 bool Link::closed_form_allowed(int di) const {
+  const Direction& d = dir_[di];
+  if (d.armed && d.want < d.queue.front().bytes) return false;  // see arm_input
   switch (fidelity_) {
     case LinkFidelity::packet:
       if (!packet_runs_ || faulted_ || deadline_waits_ > 0 || dir_[di].queue.front().bytes < 3)
@@ -566,6 +597,7 @@ void Link::on_closed_form(int di) {
     cf.delivered = true;
     d.dma_received.add(cf.bytes - 1, cf.start);
     d.dma_received.add(1, byte_start(cf, cf.bytes) + data_packet_);
+    d.received = cf.bytes;
     complete_receive(di);
   }
   if (cf.sender_done && cf.delivered) {
@@ -811,7 +843,7 @@ std::optional<Message> Link::receive(int to, const sc_time& deadline) {
   const int di = 1 - to;
   Direction& d = dir_[di];
   ++deadline_waits_;
-  arm_input(di);
+  arm_input(di, kWholeMessage);
   while (d.delivered.empty()) {
     if (sim_now() >= deadline) {
       reset_input(di);
@@ -821,10 +853,7 @@ std::optional<Message> Link::receive(int to, const sc_time& deadline) {
     sc_core::wait(deadline - sim_now(), d.delivered_event);
   }
   --deadline_waits_;
-  Message m = std::move(d.delivered.front());
-  d.delivered.pop_front();
-  ++d.taken;
-  return m;
+  return take_delivered(di);
 }
 
 // resetch on the sending end: the engine forgets the message (one channel per link direction: it
@@ -849,7 +878,7 @@ void Link::reset_output(int di) {
   if (started && end(di)) end(di)->transfer_end();
   if (d.receiving) {
     d.receiving = false;
-    d.received = 0;
+    d.received = d.given = 0;
     if (d.receiver_counted && end(1 - di)) end(1 - di)->transfer_end();
     d.receiver_counted = false;
   }
@@ -861,12 +890,13 @@ void Link::reset_input(int di) {
   Direction& d = dir_[di];
   if (d.closed_form.active) hand_over(di);
   d.armed = false;
+  d.want = kWholeMessage;
   d.ack_owed = false;
   if (d.receiver_counted && end(1 - di)) end(1 - di)->transfer_end();
   d.receiver_counted = false;
   if (d.receiving) {
     d.receiving = false;
-    d.received = 0;
+    d.received = d.given = 0;
   }
 }
 

@@ -48,8 +48,13 @@ class Link : public sc_core::sc_module {
   // its last byte has been acknowledged. Several senders on one end are served in order.
   void transmit(int from, Message message);
   // Called from the receiving process's thread at end `to`: arms the input DMA and returns the next
-  // message.
-  Message receive(int to);
+  // message, or its next `at_most` bytes. Flow control is byte by byte, as on the chip: after
+  // them the sender is held, its next byte unacknowledged, until the next input is armed. A
+  // message taken by several inputs arrives as pieces, each a Message of its own byte count and
+  // the sender's label; the first carries a copy of the payload and the others none, so a payload
+  // read piece by piece is shared (a shared_ptr), which lets a fault on a later byte reach it.
+  static constexpr std::int64_t kWholeMessage = INT64_MAX;
+  Message receive(int to, std::int64_t at_most = kWholeMessage);
 
   // occam's OutputOrFail / InputOrFail (INMOS's reliable-link library): as transmit and receive,
   // but at `deadline` the link engine of that end is reset (resetch) and the message abandoned:
@@ -174,21 +179,26 @@ class Link : public sc_core::sc_module {
     sc_core::sc_time start;
   };
 
-  // A FIFO of messages in a vector, which keeps its storage: a busy direction allocates nothing
-  // per message (a list allocates a node each) and an idle one holds nothing (an empty std::deque
-  // already holds a 512-byte block, and a 1024-transputer network has thousands of link
-  // directions, almost all of them idle). A queue holds a message or two, so popping the front
-  // moves little.
-  class MessageQueue {
+  // A FIFO in a vector, which keeps its storage: a busy direction allocates nothing per message (a
+  // list allocates a node each) and an idle one holds nothing (an empty std::deque already holds a
+  // 512-byte block, and a 1024-transputer network has thousands of link directions, almost all of
+  // them idle). A queue holds a message or two, so popping the front moves little.
+  template <class T>
+  class Fifo {
    public:
     bool empty() const { return items_.empty(); }
-    Message& front() { return items_.front(); }
-    const Message& front() const { return items_.front(); }
-    void push_back(Message m) { items_.push_back(std::move(m)); }
+    T& front() { return items_.front(); }
+    const T& front() const { return items_.front(); }
+    void push_back(T item) { items_.push_back(std::move(item)); }
     void pop_front() { items_.erase(items_.begin()); }
 
    private:
-    std::vector<Message> items_;
+    std::vector<T> items_;
+  };
+  // What an input takes: a message, or a piece of one (see receive).
+  struct Piece {
+    Message message;
+    bool last = true;  // the message's last byte is in it
   };
 
   struct ByteFault {
@@ -221,7 +231,7 @@ class Link : public sc_core::sc_module {
     DmaCount dma_sent, dma_received;  // bytes counted so far (closed forms: once settled)
     ClosedForm closed_form;
     // sending DMA
-    MessageQueue queue;
+    Fifo<Message> queue;
     std::int64_t sent = 0, acked = 0;
     bool may_send = true;
     std::int64_t submitted = 0, completed = 0;  // message sequence numbers
@@ -236,7 +246,10 @@ class Link : public sc_core::sc_module {
     Message incoming;
     bool payload_with_sender = false;  // incoming's payload is still the queue front's
     std::int64_t received = 0;
-    MessageQueue delivered;
+    std::int64_t want = kWholeMessage;  // bytes the armed input takes
+    std::int64_t given = 0;             // bytes of the incoming message earlier inputs took
+    bool taken_in_pieces = false;       // inputs here have asked for part of a message
+    Fifo<Piece> delivered;
     sc_core::sc_event delivered_event;
     // wire of this direction's data, and its pending acknowledges for the other direction
     int acks_pending = 0;
@@ -291,11 +304,13 @@ class Link : public sc_core::sc_module {
   void queue_ack(int d);
   void begin_incoming(int d);
   void take_payload(int d);
+  bool input_satisfied(int d) const;
   void complete_receive(int d);
+  Message take_delivered(int d);
   void count_receiver(int d);
   ProcessorActivity* end(int e) { return end_[e]; }
   std::int64_t submit(int from, Message message);  // queues it; its ticket
-  void arm_input(int d);
+  void arm_input(int d, std::int64_t at_most);
   // faults and resets
   void arm_fault();
   bool lost_on_wire(int w, const sc_core::sc_time& start, const sc_core::sc_time& length);

@@ -6,8 +6,6 @@
 //
 // SystemC elaborates once per process, so every simulation here runs in a forked child.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -26,28 +24,8 @@ using t800::LinkProtocol;
 constexpr int kValues = 16;
 using Values = std::array<double, kValues>;
 
-// Runs `simulate` in a child process and returns what it wrote (NaN everywhere if the child
-// failed).
 Values in_child(const std::function<Values()>& simulate) {
-  int fds[2];
-  if (pipe(fds) != 0) return {};
-  const pid_t pid = fork();
-  if (pid == 0) {
-    close(fds[0]);
-    const Values v = simulate();
-    const ssize_t written = write(fds[1], v.data(), sizeof v);
-    _exit(written == ssize_t(sizeof v) ? 0 : 1);
-  }
-  close(fds[1]);
-  Values v;
-  v.fill(std::nan(""));
-  Values got;
-  const bool read_all = read(fds[0], got.data(), sizeof got) == ssize_t(sizeof got);
-  close(fds[0]);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (read_all && WIFEXITED(status) && WEXITSTATUS(status) == 0) v = got;
-  return v;
+  return core_test::in_child<kValues>(simulate);
 }
 
 struct Exchange {

@@ -319,8 +319,10 @@ void IssNode::execute(network::Process& p) {
       case StopReason::running:
         if (core_.cycle() > now_cycle())
           wait_until_cycle(core_.cycle());
-        else
-          sc_core::wait(sc_core::SC_ZERO_TIME);
+        else  // held back by an activity due within the cycle: it happens first (a delta wait
+              // alone would never let the time reach it)
+          sc_core::wait(std::min(sc_core::sc_time_to_pending_activity(),
+                                 time_of(now_cycle() + 1) - t800::sim_now()));
         break;
       case StopReason::limit:
         wait_until_cycle(core_.cycle());

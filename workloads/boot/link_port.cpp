@@ -8,14 +8,13 @@
 namespace workloads::boot {
 
 void register_byte_payload() {
-  t800::register_payload_bytes(typeid(Bytes),
-                               [](std::any& payload, std::int64_t byte, std::uint8_t mask) {
-                                 auto* bytes = std::any_cast<Bytes>(&payload);
-                                 if (!bytes || byte < 0 || byte >= std::int64_t(bytes->size()))
-                                   return false;
-                                 (*bytes)[std::size_t(byte)] ^= mask;
-                                 return true;
-                               });
+  t800::register_payload_bytes(
+      typeid(SharedBytes), [](std::any& payload, std::int64_t byte, std::uint8_t mask) {
+        auto* bytes = std::any_cast<SharedBytes>(&payload);
+        if (!bytes || !*bytes || byte < 0 || byte >= std::int64_t((*bytes)->size())) return false;
+        (**bytes)[std::size_t(byte)] ^= mask;
+        return true;
+      });
 }
 
 LinkPort::LinkPort(t800::Link& link, int end, const std::string& name)
@@ -63,7 +62,7 @@ void LinkPort::output_thread() {
     while (!output_done_) sc_core::wait(output_started_);
     t800::Message m;
     m.bytes = std::int64_t(output_.size());
-    m.payload = output_;
+    m.payload = std::make_shared<Bytes>(output_);
     link_.transmit(end_, std::move(m));
     // A reset meanwhile abandoned the transfer: nobody waits for it.
     if (auto done = std::move(output_done_)) {
@@ -78,14 +77,7 @@ void LinkPort::output_thread() {
 void LinkPort::input_thread() {
   for (;;) {
     if (input_done_ && std::int64_t(buffer_.size()) < wanted_) {
-      t800::Message m = link_.receive(end_);
-      if (const auto* bytes = std::any_cast<Bytes>(&m.payload))
-        buffer_.insert(buffer_.end(), bytes->begin(), bytes->end());
-      else  // from an SDK process, which sends values: the wire's bytes are not modelled
-        throw std::runtime_error(name_ + " received a message of " + std::to_string(m.bytes) +
-                                 " bytes without its bytes (from a process of a C++ program, "
-                                 "not a booted one): a booted processor's links must lead to "
-                                 "booted processors or the host");
+      take(link_.receive(end_, wanted_ - std::int64_t(buffer_.size())));
       continue;
     }
     if (input_done_) {
@@ -108,6 +100,24 @@ void LinkPort::input_thread() {
     else
       sc_core::wait(input_changed_);
   }
+}
+
+// A piece of a block: the first brings the block's shared bytes, each its count of them.
+void LinkPort::take(const t800::Message& piece) {
+  if (const auto* bytes = std::any_cast<SharedBytes>(&piece.payload)) {
+    incoming_ = *bytes;
+    taken_ = 0;
+  } else if (piece.payload.has_value() || !incoming_) {
+    // from an SDK process, which sends values: the wire's bytes are not modelled
+    throw std::runtime_error(name_ + " received a message of " + std::to_string(piece.bytes) +
+                             " bytes without its bytes (from a process of a C++ program, not a "
+                             "booted one): a booted processor's links must lead to booted "
+                             "processors or the host");
+  }
+  const auto first = incoming_->begin() + std::ptrdiff_t(taken_);
+  buffer_.insert(buffer_.end(), first, first + std::ptrdiff_t(piece.bytes));
+  taken_ += std::size_t(piece.bytes);
+  if (taken_ == incoming_->size()) incoming_.reset();
 }
 
 }  // namespace workloads::boot

@@ -3,16 +3,14 @@
 // split them into outputs. Both run on the link model (t800/link.hpp), which times them: a block
 // is one message, so its packets, acknowledges, closed form and faults are the link's own.
 //
-// Flow control is per message (U): the link model delivers a message whole to the first input
-// armed for it, so when an input asks for fewer bytes than the sender's block holds, the rest is
-// acknowledged at once and kept here for the next input, where the chip would hold the sender
-// back byte by byte. A sender and a receiver that agree on their blocks (a channel protocol, a
-// loader reading what the host sends) are timed exactly.
+// Flow control is byte by byte, as on the chip: an input asks the link for just the bytes it
+// takes, so a sender whose block is longer is held after them until the next input.
 #pragma once
 
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +21,9 @@
 namespace workloads::boot {
 
 using Bytes = std::vector<std::uint8_t>;
+// A block's bytes as they travel: shared by the pieces the inputs take it in (t800/link.hpp,
+// Link::receive), so a fault on a byte not yet taken reaches what the receiver reads.
+using SharedBytes = std::shared_ptr<Bytes>;
 
 // The payload of a booted program's messages, registered for link faults (t800/payload_bytes.hpp):
 // a corrupted byte changes what the receiver reads.
@@ -43,8 +44,8 @@ class LinkPort {
   void watch(std::function<void()> arrived);
   void unwatch();
   // resetch: the transfer in that direction is abandoned (its callback is never called). A block
-  // already on the wire is still delivered to the link; an abandoned input's bytes stay here for
-  // the next input.
+  // already on the wire is still delivered to the link; the bytes an abandoned input was waiting
+  // for stay here for the next input (U: the chip's engine would drop them).
   void reset_output();
   void reset_input();
   // Bytes taken that were not for the taker (a boot byte on a link that lost the race to boot):
@@ -61,6 +62,7 @@ class LinkPort {
  private:
   void output_thread();
   void input_thread();
+  void take(const t800::Message& piece);
 
   t800::Link& link_;
   int end_;
@@ -72,6 +74,8 @@ class LinkPort {
   std::function<void(Bytes)> input_done_;
   std::function<void()> arrived_;
   std::deque<std::uint8_t> buffer_;
+  SharedBytes incoming_;  // the block coming in, and how much of it is taken
+  std::size_t taken_ = 0;
   sc_core::sc_event input_changed_;
 };
 
