@@ -786,8 +786,8 @@ void Link::apply_byte_fault(int di) {
     if (f.hit) f.hit(what + " lost");
     return;
   }
-  std::any& payload = d.payload_with_sender ? d.queue.front().payload : d.incoming.payload;
-  const bool changed = flip_payload_byte(payload, d.sent - 1, f.mask);
+  Payload& payload = d.payload_with_sender ? d.queue.front().payload : d.incoming.payload;
+  const bool changed = flip_message_byte(payload, d.sent - 1, f.mask);
   if (f.hit) f.hit(what + (changed ? " changed" : " changed (its value is not modelled)"));
 }
 

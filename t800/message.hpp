@@ -5,12 +5,44 @@
 #include <any>
 #include <cstdint>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 namespace t800 {
 
+// The header the software routers read to pass a routed message on
+// (network/transport/store_and_forward.hpp): the channel it is for, and the deadline every router
+// forwards it by. On the wire it is the message's first `bytes` bytes, ahead of the writer's data,
+// and Message::bytes counts them. It is typed data beside the writer's value, not a payload
+// wrapping the writer's message: a routed message is the writer's own with its header set, and its
+// reader gets it back with the header taken off. A fault on a byte of the header changes nothing
+// modelled (flip_message_byte, t800/payload_bytes.hpp).
+//
+// It is part of the Payload rather than of the Message because a link hands a receiver the
+// sender's payload as one piece and copies only the length and the label (Link::begin_incoming,
+// take_payload): so the header reaches each router the way the writer's value reaches the reader.
+struct RouteHeader {
+  std::int64_t bytes = 0;   // 0: not routed
+  int channel = -1;         // the routed channel's id
+  double deadline_us = -1;  // OutputOrFail's, which every router forwards it by; -1: sent with out
+};
+
+// What a message's bytes carry: the writer's value, of any type (the reader casts it back), and on
+// a routed channel the routers' header ahead of it.
+struct Payload {
+  Payload() = default;
+  // The writer's value (a message is written {bytes, value, label}).
+  template <class T, class = std::enable_if_t<!std::is_same_v<std::decay_t<T>, Payload>>>
+  Payload(T&& v) : value(std::forward<T>(v)) {}  // NOLINT(google-explicit-constructor)
+  void reset() { *this = Payload(); }
+
+  std::any value;
+  RouteHeader route;
+};
+
 struct Message {
-  std::int64_t bytes = 0;
-  std::any payload;
+  std::int64_t bytes = 0;  // on the wire: a routed message's header included
+  Payload payload;
   std::string label;  // for traces: what the message carries
 };
 

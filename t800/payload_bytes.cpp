@@ -15,10 +15,15 @@ void register_payload_bytes(std::type_index type, ByteFlip flip) {
   registry().emplace(type, std::move(flip));
 }
 
-bool flip_payload_byte(std::any& payload, std::int64_t byte, std::uint8_t mask) {
-  if (!payload.has_value()) return false;
-  auto found = registry().find(std::type_index(payload.type()));
-  return found != registry().end() && found->second(payload, byte, mask);
+bool flip_payload_byte(std::any& value, std::int64_t byte, std::uint8_t mask) {
+  if (!value.has_value()) return false;
+  auto found = registry().find(std::type_index(value.type()));
+  return found != registry().end() && found->second(value, byte, mask);
+}
+
+bool flip_message_byte(Payload& payload, std::int64_t byte, std::uint8_t mask) {
+  const std::int64_t header = payload.route.bytes;
+  return byte >= header && flip_payload_byte(payload.value, byte - header, mask);
 }
 
 }  // namespace t800

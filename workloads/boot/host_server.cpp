@@ -27,7 +27,7 @@ namespace {
 void send(t800::Link& link, int end, Bytes bytes, const std::string& label) {
   t800::Message m;
   m.bytes = std::int64_t(bytes.size());
-  m.payload = std::move(bytes);
+  m.payload.value = std::move(bytes);
   m.label = label;
   link.transmit(end, std::move(m));
 }
@@ -40,7 +40,7 @@ void HostServer::run(network::Process& p) {
   for (;;) {
     p.set_status_text("waiting for an SP request on the host link");
     const t800::Message m = link_->receive(end_ == 0 ? 0 : 1);
-    const auto* bytes = std::any_cast<Bytes>(&m.payload);
+    const auto* bytes = std::any_cast<Bytes>(&m.payload.value);
     if (!bytes) {
       session_.host_error = "the host link carried a message without bytes";
       session_.end(session_.host_error);

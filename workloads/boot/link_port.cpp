@@ -63,7 +63,7 @@ void LinkPort::output_thread() {
     while (!output_done_) sc_core::wait(output_started_);
     t800::Message m;
     m.bytes = std::int64_t(output_.size());
-    m.payload = output_;
+    m.payload.value = output_;
     link_.transmit(end_, std::move(m));
     // A reset meanwhile abandoned the transfer: nobody waits for it.
     if (auto done = std::move(output_done_)) {
@@ -79,7 +79,7 @@ void LinkPort::input_thread() {
   for (;;) {
     if (input_done_ && std::int64_t(buffer_.size()) < wanted_) {
       t800::Message m = link_.receive(end_);
-      if (const auto* bytes = std::any_cast<Bytes>(&m.payload))
+      if (const auto* bytes = std::any_cast<Bytes>(&m.payload.value))
         buffer_.insert(buffer_.end(), bytes->begin(), bytes->end());
       else  // from an SDK process, which sends values: the wire's bytes are not modelled
         throw std::runtime_error(name_ + " received a message of " + std::to_string(m.bytes) +
