@@ -28,6 +28,7 @@
 
 #include "bench/support/t800sim_path.hpp"
 #include "network/machine.hpp"
+#include "network/transport/store_and_forward.hpp"
 #include "t800/compute_model.hpp"
 #include "t800/link_timing.hpp"
 #include "t800/timing_table.hpp"

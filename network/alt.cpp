@@ -19,7 +19,7 @@ bool ready(Process& p, const Guard& g) {
   if (!g.enabled) return false;
   switch (g.kind) {
     case Guard::Kind::input:
-      return input_ready(*g.channel);
+      return g.channel->transport->input_ready();
     case Guard::Kind::timer:
       return p.clock() > g.after;
     case Guard::Kind::skip:
@@ -80,13 +80,9 @@ int first_ready(Process& p, const std::vector<Guard>& guards) {
   return -1;
 }
 
-// Blocks until a guard is ready: registered with the internal channels (a writer arriving wakes
-// the process), watching routed channels' mail and link inputs, and timing out at the earliest
-// timer guard.
+// Blocks until a guard is ready: woken by what each enabled input guard's channel watches for
+// (Transport::watch), and timing out at the earliest timer guard.
 void wait_for_a_guard(Process& p, const std::vector<Guard>& guards) {
-  for (const Guard& g : guards)
-    if (g.enabled && g.kind == Guard::Kind::input && g.channel->kind == Channel::Kind::internal)
-      g.channel->alting_reader = &p;
   p.set_status("in an ALT");
   p.deschedule();
   while (first_ready(p, guards) < 0) {
@@ -96,10 +92,7 @@ void wait_for_a_guard(Process& p, const std::vector<Guard>& guards) {
     for (const Guard& g : guards) {
       if (!g.enabled) continue;
       if (g.kind == Guard::Kind::timer) earliest = std::min(earliest, g.after);
-      if (g.kind != Guard::Kind::input) continue;
-      if (g.channel->kind == Channel::Kind::routed) events |= g.channel->mail.get();
-      if (g.channel->kind == Channel::Kind::direct)
-        events |= g.channel->link->input_pending_event(1 - g.channel->writer_end);
+      if (g.kind == Guard::Kind::input) g.channel->transport->watch(p, events);
     }
     if (earliest == std::numeric_limits<std::int64_t>::max())
       sc_core::wait(events);
@@ -107,8 +100,7 @@ void wait_for_a_guard(Process& p, const std::vector<Guard>& guards) {
       sc_core::wait(p.time_after(earliest) - t800::sim_now(), events);
   }
   for (const Guard& g : guards)
-    if (g.kind == Guard::Kind::input && g.channel->alting_reader == &p)
-      g.channel->alting_reader = nullptr;
+    if (g.kind == Guard::Kind::input) g.channel->transport->unwatch(p);
   p.reschedule();
   p.set_status("running");
 }

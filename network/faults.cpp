@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "network/machine.hpp"
-#include "t800/payload_bytes.hpp"
 
 namespace network {
 
@@ -106,20 +105,8 @@ void FaultLog::recovered(const Machine& m, const std::vector<int>& path, const s
   }
 }
 
-// A routed message's bytes: the router's header (its channel and length: a changed header has no
-// modelled value), then the inner message's.
-void register_routed_payload() {
-  t800::register_payload_bytes(
-      typeid(RoutedEnvelope), [](std::any& a, std::int64_t byte, std::uint8_t mask) {
-        auto& envelope = std::any_cast<RoutedEnvelope&>(a);
-        return byte >= kRouteHeaderBytes &&
-               t800::flip_payload_byte(envelope.inner.payload, byte - kRouteHeaderBytes, mask);
-      });
-}
-
 void arm_faults(Machine& m) {
   FaultLog& log = m.faults();
-  if (!log.empty()) register_routed_payload();
   for (std::size_t i = 0; i < log.records().size(); ++i) {
     const FaultSpec& f = log.records()[i].spec;
     const sc_core::sc_time at(f.at_us, sc_core::SC_US);

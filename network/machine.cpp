@@ -5,7 +5,10 @@
 #include <map>
 #include <stdexcept>
 
-#include "network/reliable.hpp"
+#include "network/transport/direct_link.hpp"
+#include "network/transport/link_io.hpp"
+#include "network/transport/rendezvous.hpp"
+#include "network/transport/store_and_forward.hpp"
 #include "network/wait_cycle.hpp"
 
 namespace network {
@@ -25,6 +28,16 @@ void run_body(Process* p, const Process::Body& body) {
   p->set_status("running");
   body(*p);
   p->mark_ended();
+}
+
+// The links a routed channel's messages leave each node of its path by.
+std::vector<StoreAndForward::Hop> hops_along(const Machine& m, const std::vector<int>& path) {
+  std::vector<StoreAndForward::Hop> hops;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const auto link = m.link_between(path[i], path[i + 1]);
+    hops.push_back({link->first, link->second});
+  }
+  return hops;
 }
 
 }  // namespace
@@ -148,16 +161,17 @@ void Machine::finalise_channels() {
     for (std::size_t i = 0; i + 1 < c->path.size(); ++i) ++users[{c->path[i], c->path[i + 1]}];
 
   std::map<std::pair<int, int>, bool> routed_hop;
+  routed_.assign(channels_.size(), nullptr);
   for (auto& c : channels_) {
     if (c->path.size() == 1) {
-      c->kind = Channel::Kind::internal;
+      c->transport = std::make_unique<Rendezvous>(*c);
     } else if (c->path.size() == 2 && users[{c->from, c->to}] == 1) {
-      c->kind = Channel::Kind::direct;
       auto hop = link_between(c->from, c->to);
-      c->link = hop->first;
-      c->writer_end = hop->second;
+      c->transport = std::make_unique<DirectLink>(*c, *hop->first, hop->second);
     } else {
-      c->kind = Channel::Kind::routed;
+      auto routed = std::make_unique<StoreAndForward>(*c, hops_along(*this, c->path));
+      routed_[std::size_t(c->id)] = routed.get();
+      c->transport = std::move(routed);
       for (std::size_t i = 0; i + 1 < c->path.size(); ++i)
         routed_hop[{c->path[i], c->path[i + 1]}] = true;
     }
@@ -169,9 +183,8 @@ void Machine::finalise_channels() {
   finalised_ = true;
 }
 
-// A software router (store-and-forward): takes each message off its link, then hands it to the
-// local reader or sends it on towards its destination along the channel's path. High priority, as
-// occam routers ran.
+// A software router (store-and-forward): takes each message off its link and passes it on as its
+// channel's header says (StoreAndForward::pass_on). High priority, as occam routers ran.
 void Machine::start_router(int node, int from, t800::Link& link, int end) {
   const std::string name = "router@" + node_name(node) + "<-" + node_name(from);
   Process& router =
@@ -179,19 +192,8 @@ void Machine::start_router(int node, int from, t800::Link& link, int end) {
         for (;;) {
           self.set_status("router waiting");
           t800::Message m = link_in(self, link, end);
-          RoutedEnvelope& envelope = std::any_cast<RoutedEnvelope&>(m.payload);
-          Channel& c = *channels_.at(envelope.channel);
-          if (c.to == node) {
-            deliver_to_mailbox(self, c, std::move(envelope.inner));
-            continue;
-          }
-          auto here = std::find(c.path.begin(), c.path.end(), node);
-          auto next = link_between(node, *(here + 1));
-          const double deadline_us = envelope.deadline_us;
-          if (deadline_us < 0)
-            link_out(self, *next->first, next->second, std::move(m));
-          else if (!forward_or_fail(self, *next->first, next->second, std::move(m), deadline_us))
-            self.set_status_text("router dropped a message for " + c.name + " at its deadline");
+          StoreAndForward& channel = *routed_.at(std::size_t(m.route.channel));
+          channel.pass_on(self, node, std::move(m));
         }
       });
   router.set_daemon();

@@ -26,6 +26,8 @@
 
 namespace network {
 
+class StoreAndForward;
+
 struct MachineOptions {
   t800::LinkConfig link;  // default for connections without their own speed
   t800::Precision precision = t800::Precision::real64;
@@ -150,6 +152,8 @@ class Machine {
   std::vector<std::unique_ptr<t800::Link>> link_modules_;
   std::vector<LinkInfo> links_;
   std::vector<std::unique_ptr<Channel>> channels_;
+  // By channel id, the transports of the routed channels (null for the others), for the routers.
+  std::vector<StoreAndForward*> routed_;
   std::vector<std::unique_ptr<Process>> processes_;
   std::uint64_t spawned_ = 0;
   void start(Process& p, Process::Body body);

@@ -53,7 +53,7 @@ void Process::out(Channel& channel, t800::Message message) {
   channel.last_writer.set(*this);
   channel_ = &channel;
   outputting_ = true;
-  send(*this, channel, std::move(message));
+  channel.transport->send(*this, std::move(message));
   channel_ = nullptr;
   set_status("running");
 }
@@ -63,7 +63,7 @@ t800::Message Process::in(Channel& channel) {
   channel.last_reader.set(*this);
   channel_ = &channel;
   outputting_ = false;
-  t800::Message m = receive(*this, channel);
+  t800::Message m = channel.transport->receive(*this);
   channel_ = nullptr;
   set_status("running");
   return m;

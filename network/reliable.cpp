@@ -1,8 +1,8 @@
 #include "network/reliable.hpp"
 
 #include "network/channel.hpp"
-#include "network/machine.hpp"
 #include "network/process.hpp"
+#include "t800/link.hpp"
 
 namespace network {
 
@@ -49,19 +49,13 @@ bool transmit_or_fail(Process& p, t800::Link& link, int end, t800::Message m, do
 
 }  // namespace
 
-bool out_or_fail(Process& p, Channel& c, t800::Message m, double deadline_us) {
-  if (c.kind == Channel::Kind::internal) {
-    p.out(c, std::move(m));
-    return true;
-  }
-  set_deadline(p);
-  const bool done = communicating(p, c, true, [&] {
-    if (c.kind == Channel::Kind::direct)
-      return transmit_or_fail(p, *c.link, c.writer_end, std::move(m), deadline_us);
-    FirstHop hop = routed_first_hop(p, c, std::move(m), deadline_us);
-    return transmit_or_fail(p, *hop.link, hop.end, std::move(hop.wrapped), deadline_us);
+bool output_or_fail(Process& writer, Channel& c, t800::Link& link, int end, t800::Message m,
+                    double deadline_us) {
+  set_deadline(writer);
+  const bool done = communicating(writer, c, true, [&] {
+    return transmit_or_fail(writer, link, end, std::move(m), deadline_us);
   });
-  if (!done) reset_channel(p);
+  if (!done) reset_channel(writer);
   return done;
 }
 
@@ -73,27 +67,17 @@ bool forward_or_fail(Process& router, t800::Link& link, int end, t800::Message m
   return done;
 }
 
-std::optional<t800::Message> in_or_fail(Process& p, Channel& c, double deadline_us) {
-  if (c.kind == Channel::Kind::internal) return p.in(c);
-  set_deadline(p);
-  auto received = communicating(p, c, false, [&]() -> std::optional<t800::Message> {
-    p.communicate(0, false);
-    p.deschedule();
-    std::optional<t800::Message> m;
-    if (c.kind == Channel::Kind::direct) {
-      m = c.link->receive(1 - c.writer_end, at_us(deadline_us));
-    } else {
-      while (c.mailbox.empty() && t800::sim_now() < at_us(deadline_us))
-        sc_core::wait(at_us(deadline_us) - t800::sim_now(), c.mail.get());
-      if (!c.mailbox.empty()) {
-        m = std::move(c.mailbox.front());
-        c.mailbox.pop_front();
-      }
-    }
-    p.reschedule();
+std::optional<t800::Message> input_or_fail(Process& reader, Channel& c, double deadline_us,
+                                           const Arrival& arrival) {
+  set_deadline(reader);
+  auto received = communicating(reader, c, false, [&] {
+    reader.communicate(0, false);
+    reader.deschedule();
+    std::optional<t800::Message> m = arrival(at_us(deadline_us));
+    reader.reschedule();
     return m;
   });
-  if (!received) reset_channel(p);
+  if (!received) reset_channel(reader);
   return received;
 }
 

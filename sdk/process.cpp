@@ -10,7 +10,6 @@
 #include "network/channel.hpp"
 #include "network/machine.hpp"
 #include "network/process.hpp"
-#include "network/reliable.hpp"
 #include "t800/payload_bytes.hpp"
 #include "t800sim/kernel.hpp"
 
@@ -109,13 +108,13 @@ void Process::Wire::send(std::int64_t bytes, std::any value) {
   if (deadline_us_ < 0)
     process_.out(channel_, std::move(m));
   else
-    failed_ = !network::out_or_fail(process_, channel_, std::move(m), deadline_us_);
+    failed_ = !channel_.transport->send_or_fail(process_, std::move(m), deadline_us_);
 }
 
 std::any Process::Wire::receive() {
   if (failed_) return {};
   if (deadline_us_ < 0) return process_.in(channel_).payload;
-  auto m = network::in_or_fail(process_, channel_, deadline_us_);
+  auto m = channel_.transport->receive_or_fail(process_, deadline_us_);
   failed_ = !m;
   return m ? std::move(m->payload) : std::any{};
 }

@@ -433,14 +433,15 @@ void Link::on_byte_arrived(int di) {
   if (d.armed && input_satisfied(di)) complete_receive(di);
 }
 
-// The receiver's copy of the message now starting: its length and label. Its payload stays in the
-// sender's queue -- copying it would cost an allocation or two per message -- until the sender is
-// done with the message or the receiver has it, whichever comes first (take_payload).
+// The receiver's copy of the message now starting: its length, label and route header. Its payload
+// stays in the sender's queue -- copying it would cost an allocation or two per message -- until
+// the sender is done with the message or the receiver has it, whichever comes first (take_payload).
 void Link::begin_incoming(int di) {
   Direction& d = dir_[di];
   const Message& m = d.queue.front();
   d.incoming.bytes = m.bytes;
   d.incoming.label = m.label;
+  d.incoming.route = m.route;
   d.incoming.payload.reset();
   d.payload_with_sender = true;
 }
@@ -473,6 +474,7 @@ void Link::complete_receive(int di) {
   } else {
     piece.message.bytes = d.received - d.given;
     piece.message.label = d.incoming.label;
+    piece.message.route = d.incoming.route;
     if (d.given == 0) piece.message.payload = d.incoming.payload;
     d.given = d.received;
   }
@@ -819,7 +821,7 @@ void Link::apply_byte_fault(int di) {
     return;
   }
   std::any& payload = d.payload_with_sender ? d.queue.front().payload : d.incoming.payload;
-  const bool changed = flip_payload_byte(payload, d.sent - 1, f.mask);
+  const bool changed = flip_message_byte(payload, d.incoming.route, d.sent - 1, f.mask);
   if (f.hit) f.hit(what + (changed ? " changed" : " changed (its value is not modelled)"));
 }
 

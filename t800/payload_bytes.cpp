@@ -15,10 +15,15 @@ void register_payload_bytes(std::type_index type, ByteFlip flip) {
   registry().emplace(type, std::move(flip));
 }
 
-bool flip_payload_byte(std::any& payload, std::int64_t byte, std::uint8_t mask) {
-  if (!payload.has_value()) return false;
-  auto found = registry().find(std::type_index(payload.type()));
-  return found != registry().end() && found->second(payload, byte, mask);
+bool flip_payload_byte(std::any& value, std::int64_t byte, std::uint8_t mask) {
+  if (!value.has_value()) return false;
+  auto found = registry().find(std::type_index(value.type()));
+  return found != registry().end() && found->second(value, byte, mask);
+}
+
+bool flip_message_byte(std::any& payload, const RouteHeader& route, std::int64_t byte,
+                       std::uint8_t mask) {
+  return byte >= route.bytes && flip_payload_byte(payload, byte - route.bytes, mask);
 }
 
 }  // namespace t800

@@ -9,16 +9,22 @@
 #include <functional>
 #include <typeindex>
 
+#include "t800/message.hpp"
+
 namespace t800 {
 
-// Changes `payload` as if byte `byte` of its message (0 = the first on the wire) arrived XORed with
-// `mask`; false when that byte has no modelled value (a routing header).
-using ByteFlip = std::function<bool(std::any& payload, std::int64_t byte, std::uint8_t mask)>;
+// Changes a writer's value (Message::payload) as if byte `byte` of it (0 = the first on the wire)
+// arrived XORed with `mask`; false when that byte has no modelled value.
+using ByteFlip = std::function<bool(std::any& value, std::int64_t byte, std::uint8_t mask)>;
 
 // Registering a type twice keeps the first.
 void register_payload_bytes(std::type_index type, ByteFlip flip);
-// false when the payload's type was never registered, or the byte has no modelled value.
-bool flip_payload_byte(std::any& payload, std::int64_t byte, std::uint8_t mask);
+// false when the value's type was never registered, or the byte has no modelled value.
+bool flip_payload_byte(std::any& value, std::int64_t byte, std::uint8_t mask);
+// As if byte `byte` of the message carrying `payload` arrived changed: a byte of a routed message's
+// header (RouteHeader) has no modelled value, the bytes after it are the writer's value's.
+bool flip_message_byte(std::any& payload, const RouteHeader& route, std::int64_t byte,
+                       std::uint8_t mask);
 
 // Flips byte `byte` (0-based, little-endian as the T800 stores) of a plain value.
 template <class T>

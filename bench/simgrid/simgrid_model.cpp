@@ -18,7 +18,7 @@
 //   one at a time (one receiver posts one receive at a time);
 // * a channel is direct when it is alone on its link direction, else routed: store-and-forward
 //   through a router on every transputer the message enters, with an 8-byte header, as
-//   network/channel.hpp does.
+//   network/transport/store_and_forward.hpp does.
 #include <chrono>
 #include <cstdio>
 #include <deque>

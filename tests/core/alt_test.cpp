@@ -135,8 +135,8 @@ TEST(Alt, WorksOnLinkAndRoutedChannels) {
     }
   });
   ASSERT_TRUE(m.run().empty());
-  EXPECT_EQ(direct.kind, network::Channel::Kind::direct);
-  EXPECT_EQ(routed.kind, network::Channel::Kind::routed);
+  EXPECT_STREQ(direct.transport->kind_name(), "direct");
+  EXPECT_STREQ(routed.transport->kind_name(), "routed");
   EXPECT_EQ(order, (std::vector<int>{1, 0}));  // the far message first, the near one after 100 us
 }
 

@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdio>
+#include <vector>
 
 #include "core_fixtures.hpp"
-#include "network/reliable.hpp"
+#include "network/transport/store_and_forward.hpp"
 #include "t800/payload_bytes.hpp"
 
 namespace {
@@ -70,6 +72,48 @@ TEST(FaultModel, ACorruptedByteChangesTheValueTheReceiverReads) {
   EXPECT_NE(r.hit.find("byte 1 of 4"), std::string::npos) << r.hit;
 }
 
+// A routed message on the wire is the routers' header, then the writer's value: a corrupted byte
+// past the header changes the value's byte that many bytes in, one inside it changes nothing.
+class RoutedCorruption : public ::testing::TestWithParam<double> {};
+
+TEST_P(RoutedCorruption, ReachesTheWritersValuePastTheHeader) {
+  using Bytes = std::vector<std::uint8_t>;
+  t800::register_payload_bytes(typeid(Bytes), [](std::any& a, std::int64_t b, std::uint8_t mask) {
+    std::any_cast<Bytes&>(a).at(std::size_t(b)) ^= mask;
+    return true;
+  });
+  Machine m(core_test::chain(2), core_test::options(20));
+  m.faults().add(link_fault(FaultSpec::Kind::corrupt, GetParam(), 0x80));
+  network::arm_faults(m);
+  auto& c = m.channel("far", 0, 2);
+  Bytes sent(100), received;
+  for (std::size_t i = 0; i < sent.size(); ++i) sent[i] = std::uint8_t(i);
+  m.spawn(0, "writer", Priority::low, [&](Process& p) {
+    p.out(c, {std::int64_t(sent.size()), sent, "block"});
+  });
+  m.spawn(2, "reader", Priority::low,
+          [&](Process& p) { received = std::any_cast<Bytes>(p.in(c).payload); });
+  ASSERT_TRUE(m.run().empty());
+  ASSERT_STREQ(c.transport->kind_name(), "routed");
+  const network::FaultRecord& r = m.faults().records()[0];
+  ASSERT_TRUE(r.fired);
+  int byte = 0, of = 0;  // 1-based, as the hit names it
+  ASSERT_EQ(std::sscanf(r.hit.c_str(), "byte %d of %d", &byte, &of), 2) << r.hit;
+  EXPECT_EQ(of, 100 + network::kRouteHeaderBytes);
+  EXPECT_EQ(byte <= network::kRouteHeaderBytes, GetParam() == 0.0) << r.hit;
+  Bytes expected = sent;
+  if (byte > network::kRouteHeaderBytes) {
+    expected[std::size_t(byte - 1 - network::kRouteHeaderBytes)] ^= 0x80;
+    EXPECT_EQ(r.hit.find("not modelled"), std::string::npos) << r.hit;
+  } else {
+    EXPECT_NE(r.hit.find("changed (its value is not modelled)"), std::string::npos) << r.hit;
+  }
+  EXPECT_EQ(received, expected);
+}
+
+// At 0 the header's first byte; at 30 us, some 50 bytes into the message.
+INSTANTIATE_TEST_SUITE_P(InTheHeaderAndPastIt, RoutedCorruption, ::testing::Values(0.0, 30.0));
+
 TEST(FaultModel, ADroppedByteLeavesSenderAndReceiverWaiting) {
   Machine m(core_test::chain(1), core_test::options(20));
   m.faults().add(link_fault(FaultSpec::Kind::drop, 0));
@@ -128,9 +172,9 @@ TEST(FaultModel, OutputOrFailAndInputOrFailGiveUpAtTheirDeadline) {
   bool sent = true, received = true;
   double out_end = 0, in_end = 0;
   m.spawn(0, "master", Priority::low, [&](Process& p) {
-    sent = network::out_or_fail(p, out, {8, {}, "order"}, 200);
+    sent = out.transport->send_or_fail(p, {8, {}, "order"}, 200);
     out_end = p.now_us();
-    received = network::in_or_fail(p, in, 500).has_value();
+    received = in.transport->receive_or_fail(p, 500).has_value();
     in_end = p.now_us();
   });
   ASSERT_TRUE(m.run().empty());

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core_fixtures.hpp"
-#include "network/channel.hpp"
+#include "network/transport/store_and_forward.hpp"
 
 namespace {
 
@@ -47,7 +47,7 @@ TEST_P(RoutedMessage, FollowsStoreAndForwardFormula) {
     arrival_us = p.now_us();
   });
   ASSERT_TRUE(m.run().empty());
-  ASSERT_EQ(c.kind, network::Channel::Kind::routed);
+  ASSERT_STREQ(c.transport->kind_name(), "routed");
 
   // Sender set-up, then per hop the link time and (except at the end) the router's output set-up,
   // then the last router's copy into the reader's buffer, and the router re-arming its input before
@@ -72,7 +72,7 @@ TEST(DirectChannel, NeighboursUseTheLinkDirectly) {
     arrival_us = p.now_us();
   });
   ASSERT_TRUE(m.run().empty());
-  EXPECT_EQ(c.kind, network::Channel::Kind::direct);
+  EXPECT_STREQ(c.transport->kind_name(), "direct");
   EXPECT_NEAR(arrival_us * 1000.0, setup_cycles(96) * kCycleNs + link_time_ns(96), 1.0);
 }
 

@@ -7,7 +7,7 @@
 // (the skeleton's shared input, one message of REALs); workers evaluate their subtasks -- each
 // costed by the code that computes it -- and return the values; the master forms c and assembles
 // D, C, h. Workers that are not the master's neighbours are reached through software routers on
-// the processors between (network/channel.hpp).
+// the processors between (network/transport/store_and_forward.hpp).
 #pragma once
 
 #include <memory>

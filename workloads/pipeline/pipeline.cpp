@@ -164,7 +164,7 @@ ResultValue EliminationPipeline::results(const network::Machine& machine) const 
     for (int node : c->path) path += (path.empty() ? "" : "-") + machine.node_name(node);
     ResultValue ch;
     ch.set("name", c->name);
-    ch.set("kind", network::to_string(c->kind));
+    ch.set("kind", c->transport->kind_name());
     ch.set("path", path);
     channels.push(ch);
   }
