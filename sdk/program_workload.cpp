@@ -2,15 +2,35 @@
 
 #include <stdexcept>
 
+#include "network/config_error.hpp"
 #include "network/machine.hpp"
+#include "sdk/plugin_loader.hpp"
 #include "sdk/realise.hpp"
+#include "workloads/run/thrown.hpp"
 #include "workloads/setting_error.hpp"
 
 namespace t800sim::detail {
 
+void run_program_code(const std::string& label, const std::string& step,
+                      const std::function<void()>& code) {
+  try {
+    code();
+  } catch (const workloads::SettingError& e) {
+    throw workloads::SettingError(e.keys(), "workload " + label + ": " + e.what());
+  } catch (const network::ConfigError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("workload " + label + ": " + e.what());
+  } catch (...) {
+    throw std::invalid_argument("workload " + label + ": " + step + " threw " +
+                                workloads::describe_thrown(std::current_exception()));
+  }
+}
+
 ProgramWorkload::ProgramWorkload(std::string kind, std::unique_ptr<Program> program,
                                  const workloads::WorkloadContext& context)
     : kind_(std::move(kind)),
+      label_(workload_label(kind_)),
       program_(std::move(program)),
       topology_(context.topology),
       scene_placement_(context.placement ? *context.placement
@@ -19,14 +39,8 @@ ProgramWorkload::ProgramWorkload(std::string kind, std::unique_ptr<Program> prog
 
 void ProgramWorkload::build(network::Machine& machine) {
   builder_.attach(machine);
-  try {
-    program_->build(builder_);
-  } catch (const workloads::SettingError& e) {
-    throw workloads::SettingError(e.keys(), "workload " + kind_ + ": " + e.what());
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("workload " + kind_ + ": " + e.what());
-  }
-  placed_ = realise(kind_, builder_, machine, scene_placement_);
+  run_program_code(label_, "its build()", [this] { program_->build(builder_); });
+  placed_ = realise(label_, builder_, machine, scene_placement_);
 }
 
 workloads::ResultValue ProgramWorkload::results(const network::Machine& machine) const {
