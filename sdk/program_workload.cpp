@@ -11,8 +11,13 @@
 
 namespace t800sim::detail {
 
-void run_program_code(const std::string& label, const std::string& step,
-                      const std::function<void()>& code) {
+namespace {
+
+// What the program's code throws, named after the workload; anything but the errors of settings
+// and scene lines becomes `Failure`.
+template <class Failure>
+void named_after_workload(const std::string& label, const std::string& step,
+                          const std::function<void()>& code) {
   try {
     code();
   } catch (const workloads::SettingError& e) {
@@ -22,9 +27,16 @@ void run_program_code(const std::string& label, const std::string& step,
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("workload " + label + ": " + e.what());
   } catch (...) {
-    throw std::invalid_argument("workload " + label + ": " + step + " threw " +
-                                workloads::describe_thrown(std::current_exception()));
+    throw Failure("workload " + label + ": " + step + " threw " +
+                  workloads::describe_thrown(std::current_exception()));
   }
+}
+
+}  // namespace
+
+void run_program_code(const std::string& label, const std::string& step,
+                      const std::function<void()>& code) {
+  named_after_workload<std::invalid_argument>(label, step, code);
 }
 
 ProgramWorkload::ProgramWorkload(std::string kind, std::unique_ptr<Program> program,
@@ -48,7 +60,9 @@ workloads::ResultValue ProgramWorkload::results(const network::Machine& machine)
   v.set("kind", kind_);
   tables_.clear();
   Results results(v, machine, tables_);
-  program_->results(results);
+  // After the run: what else results() throws is a failed run, not bad input.
+  named_after_workload<std::runtime_error>(label_, "its results()",
+                                           [&] { program_->results(results); });
   check_tables();
   workloads::ResultValue placement = workloads::ResultValue::list();
   for (const PlacedProcess& p : placed_) {

@@ -131,6 +131,18 @@ TEST(PluginFailure, AProcessBodyThatThrowsAnIntIsNamedWithItsProcessor) {
   expect_process_failure("faulty_body_int", "int_thrower", "int");
 }
 
+// After a run that ended: exit 1 (the run failed), no report, the kind and plugin named.
+TEST(PluginFailure, ResultsThatThrowAreAFailedRunNamingTheWorkload) {
+  const PluginScene scene("faulty", "plugins/faulty.so", kind_line("faulty_results"));
+  const auto o = cli_test::run("run " + scene.file.string() + " 2>&1");
+  EXPECT_EQ(o.exit_code, 1) << o.out;
+  EXPECT_TRUE(has(o.out, "workload faulty_results")) << o.out;
+  EXPECT_TRUE(has(o.out, (scene.dir / "plugins" / "faulty.so").string())) << o.out;
+  EXPECT_TRUE(has(o.out, "results()")) << o.out;
+  EXPECT_TRUE(has(o.out, "int")) << o.out;
+  expect_no_crash_words(o.out);
+}
+
 // A plugin file `why` refuses without running any of it: exit 2 at the plugin's line.
 void expect_file_refused(const PluginScene& scene, const std::string& shown,
                          const std::string& why) {

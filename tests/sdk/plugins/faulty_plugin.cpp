@@ -51,6 +51,22 @@ T800SIM_WORKLOAD(faulty_body_int) {
   });
 }
 
+// Runs, then throws an int when asked for its results.
+class ThrowsResults : public Program {
+ public:
+  void build(Builder& b) override {
+    b.process("quiet", [](Process& p) { p.compute(10, "quiet"); });
+  }
+  void results(Results&) const override { throw 7; }
+};
+
+T800SIM_WORKLOAD(faulty_results) {
+  return {"faulty_results",
+          "a program whose results() throws an int",
+          {},
+          [](const Params&, const Network&) { return std::make_unique<ThrowsResults>(); }};
+}
+
 T800SIM_WORKLOAD(faulty_two_writers) {
   return failing("faulty_two_writers", "two processes output to one channel", [](Builder& b) {
     const Out<INT> first = b.output<INT>("shared", "first");
