@@ -2,15 +2,47 @@
 
 #include <stdexcept>
 
+#include "network/config_error.hpp"
 #include "network/machine.hpp"
+#include "sdk/plugin_loader.hpp"
 #include "sdk/realise.hpp"
+#include "workloads/run/thrown.hpp"
 #include "workloads/setting_error.hpp"
 
 namespace t800sim::detail {
 
+namespace {
+
+// What the program's code throws, named after the workload; anything but the errors of settings
+// and scene lines becomes `Failure`.
+template <class Failure>
+void named_after_workload(const std::string& label, const std::string& step,
+                          const std::function<void()>& code) {
+  try {
+    code();
+  } catch (const workloads::SettingError& e) {
+    throw workloads::SettingError(e.keys(), "workload " + label + ": " + e.what());
+  } catch (const network::ConfigError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("workload " + label + ": " + e.what());
+  } catch (...) {
+    throw Failure("workload " + label + ": " + step + " threw " +
+                  workloads::describe_thrown(std::current_exception()));
+  }
+}
+
+}  // namespace
+
+void run_program_code(const std::string& label, const std::string& step,
+                      const std::function<void()>& code) {
+  named_after_workload<std::invalid_argument>(label, step, code);
+}
+
 ProgramWorkload::ProgramWorkload(std::string kind, std::unique_ptr<Program> program,
                                  const workloads::WorkloadContext& context)
     : kind_(std::move(kind)),
+      label_(workload_label(kind_)),
       program_(std::move(program)),
       topology_(context.topology),
       scene_placement_(context.placement ? *context.placement
@@ -19,14 +51,8 @@ ProgramWorkload::ProgramWorkload(std::string kind, std::unique_ptr<Program> prog
 
 void ProgramWorkload::build(network::Machine& machine) {
   builder_.attach(machine);
-  try {
-    program_->build(builder_);
-  } catch (const workloads::SettingError& e) {
-    throw workloads::SettingError(e.keys(), "workload " + kind_ + ": " + e.what());
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("workload " + kind_ + ": " + e.what());
-  }
-  placed_ = realise(kind_, builder_, machine, scene_placement_);
+  run_program_code(label_, "its build()", [this] { program_->build(builder_); });
+  placed_ = realise(label_, builder_, machine, scene_placement_);
 }
 
 workloads::ResultValue ProgramWorkload::results(const network::Machine& machine) const {
@@ -34,7 +60,9 @@ workloads::ResultValue ProgramWorkload::results(const network::Machine& machine)
   v.set("kind", kind_);
   tables_.clear();
   Results results(v, machine, tables_);
-  program_->results(results);
+  // After the run: what else results() throws is a failed run, not bad input.
+  named_after_workload<std::runtime_error>(label_, "its results()",
+                                           [&] { program_->results(results); });
   check_tables();
   workloads::ResultValue placement = workloads::ResultValue::list();
   for (const PlacedProcess& p : placed_) {

@@ -3,6 +3,7 @@
 // process ran.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,13 @@
 #include "workloads/run/workload.hpp"
 
 namespace t800sim::detail {
+
+// Runs a piece of the program's own code -- its factory, its build() -- so that what it throws
+// names the workload (`label`: its kind, and its plugin if a plugin registered it): a SettingError
+// keeps its keys and a network::ConfigError its place; anything else becomes std::invalid_argument
+// (bad input: the program refused its settings), saying what `step` threw.
+void run_program_code(const std::string& label, const std::string& step,
+                      const std::function<void()>& code);
 
 class ProgramWorkload : public workloads::Workload {
  public:
@@ -26,6 +34,7 @@ class ProgramWorkload : public workloads::Workload {
   void check_tables() const;
 
   std::string kind_;
+  std::string label_;  // for messages: the kind, and the plugin that registered it
   std::unique_ptr<Program> program_;
   const network::Topology& topology_;
   std::vector<workloads::PlacementEntry> scene_placement_;

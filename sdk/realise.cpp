@@ -3,11 +3,33 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include <fmt/format.h>
+#include <systemc>
+
 #include "network/machine.hpp"
+#include "workloads/run/process_error.hpp"
+#include "workloads/run/thrown.hpp"
 
 namespace t800sim::detail {
 
 namespace {
+
+// Whatever the body lets out is recorded with the process's own name before SystemC sees it
+// (workloads/run/process_error.hpp); SystemC's own unwinding of a thread it kills passes through.
+void run_body(const std::string& kind, const Process::Body& body, Process& process) {
+  try {
+    body(process);
+  } catch (const sc_core::sc_unwind_exception&) {
+    throw;
+  } catch (...) {
+    const workloads::ProcessError error(
+        fmt::format("workload {}: process {} on {} threw {} (at {} us of simulated time)", kind,
+                    process.name(), process.processor(),
+                    workloads::describe_thrown(std::current_exception()), process.now_us()));
+    workloads::record_process_error(error);
+    throw error;
+  }
+}
 
 class Realisation {
  public:
@@ -50,8 +72,8 @@ class Realisation {
       const Process::IndexedBody& body = p.decl->body;
       const int index = p.index;
       detail::spawn(
-          machine, p.node, p.name, [&body, index](Process& process) { body(process, index); },
-          p.decl->high_priority);
+          kind_, machine, p.node, p.name,
+          [&body, index](Process& process) { body(process, index); }, p.decl->high_priority);
     }
   }
 
@@ -93,12 +115,12 @@ class Realisation {
 
 }  // namespace
 
-void spawn(network::Machine& machine, int node, const std::string& name, const Process::Body& body,
-           bool high_priority) {
+void spawn(const std::string& kind, network::Machine& machine, int node, const std::string& name,
+           const Process::Body& body, bool high_priority) {
   machine.spawn(node, name, high_priority ? t800::Priority::high : t800::Priority::low,
-                [body](network::Process& impl) {
+                [kind, body](network::Process& impl) {
                   Process process(impl);
-                  body(process);
+                  run_body(kind, body, process);
                 });
 }
 

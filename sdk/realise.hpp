@@ -23,8 +23,9 @@ std::vector<PlacedProcess> realise(const std::string& kind, Builder& builder,
 
 // Spawns a process with an SDK body on `node` (a processor index, or network::Machine::kHost):
 // how a built-in workload starts the processes it declares without a body -- the host's, and a
-// master it drives itself -- and how realise() starts the others.
-void spawn(network::Machine& machine, int node, const std::string& name, const Process::Body& body,
-           bool high_priority = false);
+// master it drives itself -- and how realise() starts the others. An exception the body lets out
+// ends the run with a workloads::ProcessError naming `kind`, the process and its processor.
+void spawn(const std::string& kind, network::Machine& machine, int node, const std::string& name,
+           const Process::Body& body, bool high_priority = false);
 
 }  // namespace t800sim::detail

@@ -12,12 +12,16 @@ void register_workload(WorkloadSpec spec) {
     if (!spec.make) throw std::invalid_argument("workload kind " + spec.kind + " has no factory");
     auto make = std::move(spec.make);
     const std::string kind = spec.kind;
-    workloads::register_kind({spec.kind, spec.summary, std::move(spec.params)},
-                             [make, kind](const workloads::WorkloadContext& context) {
-                               const Network network(context.topology);
-                               return std::make_unique<detail::ProgramWorkload>(
-                                   kind, make(context.params, network), context);
-                             });
+    workloads::register_kind(
+        {spec.kind, spec.summary, std::move(spec.params)},
+        [make, kind](const workloads::WorkloadContext& context) {
+          const Network network(context.topology);
+          std::unique_ptr<Program> program;
+          detail::run_program_code(detail::workload_label(kind), "its factory",
+                                   [&] { program = make(context.params, network); });
+          return std::make_unique<detail::ProgramWorkload>(kind, std::move(program), context);
+        });
+    detail::note_plugin_kind(kind);
   } catch (const std::invalid_argument& e) {
     if (!detail::note_plugin_registration_error(e.what())) throw;
   }

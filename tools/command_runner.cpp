@@ -4,6 +4,7 @@
 #include "network/config_error.hpp"
 #include "tools/commands.hpp"
 #include "tools/unwound_frames.hpp"
+#include "workloads/run/thrown.hpp"
 
 namespace tools {
 
@@ -18,6 +19,8 @@ CommandError command_error(const std::exception_ptr& thrown) {
     return {kExitBadInput, network::bounded_message("error: " + std::string(e.what()))};
   } catch (const std::exception& e) {
     return {kExitFailure, network::bounded_message("error: " + std::string(e.what()))};
+  } catch (...) {  // from a plugin's code: anything may be thrown
+    return {kExitFailure, network::bounded_message("error: " + workloads::describe_thrown(thrown))};
   }
 }
 
@@ -25,7 +28,7 @@ void run_command(const std::function<int()>& body) {
   int code = kExitOk;
   try {
     code = body();
-  } catch (const std::exception&) {
+  } catch (...) {
     forget_unwound_frames();
     const CommandError error = command_error(std::current_exception());
     std::cerr << error.message << "\n";

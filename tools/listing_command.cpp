@@ -47,9 +47,8 @@ std::string kernel_table(const network::Machine& machine) {
 int list(const ListingArgs& args) {
   const Scene scene = load_scene(args.scene, args.overrides);
   const workloads::RunInputs inputs = inputs_from(scene);
-  network::Machine machine(inputs.topology, inputs.options);
-  const std::unique_ptr<workloads::Workload> workload = workloads::build_workload(machine, inputs);
-  machine.prepare();
+  const workloads::Realised realised = workloads::realise(inputs);
+  const network::Machine& machine = *realised.machine;
   if (machine.declared_code().empty())
     throw std::invalid_argument("scene " + scene.name + ": its workload (" + scene.workload_kind +
                                 ") declares no recorded kernels, so there is no code to list");

@@ -90,7 +90,8 @@ int run_scene(const RunArgs& args) {
   inputs.options.progress = [&progress](std::int64_t done, std::int64_t total) {
     progress.update(done, total);
   };
-  const workloads::RunReport report = workloads::run(inputs);
+  workloads::RunReport report;
+  at_scene_keys(scene, [&] { report = workloads::run(inputs); });
   progress.end();
   std::cout << (args.json ? format_json(report) : format_text(report)) << std::flush;
   write_traces(report, args.traces);  // also after a deadlock: the trace shows who waited for whom

@@ -6,6 +6,7 @@
 #include "tools/robot_file.hpp"
 #include "workloads/registry.hpp"
 #include "workloads/run/output_file.hpp"
+#include "workloads/run/run.hpp"
 #include "workloads/run/workload.hpp"
 #include "workloads/setting_error.hpp"
 
@@ -26,12 +27,10 @@ void load_robot_of(const Scene& scene, const std::string& key, const std::string
 // Makes the workload as run() will, without a machine: its constructor checks the settings against
 // the network and each other.
 void check_workload(const Scene& scene, const workloads::RunInputs& in) {
-  try {
+  at_scene_keys(scene, [&] {
     workloads::make_workload(in.kind,
                              workloads::WorkloadContext{in.params, in.topology, in.robot.get()});
-  } catch (const workloads::SettingError& e) {
-    throw network::ConfigError(origin_of(scene, e.keys()), e.what());
-  }
+  });
 }
 
 // Files to read must be there now, not after the simulation.
@@ -66,6 +65,14 @@ void precision_of(const Scene& scene, const workloads::WorkloadInfo& info,
 }
 
 }  // namespace
+
+void at_scene_keys(const Scene& scene, const std::function<void()>& code) {
+  try {
+    code();
+  } catch (const workloads::SettingError& e) {
+    throw network::ConfigError(origin_of(scene, e.keys()), e.what());
+  }
+}
 
 workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
   workloads::RunInputs in;
@@ -103,7 +110,12 @@ workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
 
 std::string check_input(const std::string& path) {
   const std::string summary = check_file(path);
-  if (summary.rfind("scene ", 0) == 0) inputs_from(load_scene(path));
+  if (summary.rfind("scene ", 0) != 0) return summary;
+  const Scene scene = load_scene(path);
+  const workloads::RunInputs inputs = inputs_from(scene);
+  // Realised as run() realises it, short of simulating: what the program's build(), its placement
+  // and its channels' routes refuse is refused here too.
+  at_scene_keys(scene, [&] { workloads::realise(inputs); });
   return summary;
 }
 

@@ -3,6 +3,8 @@
 // fail on its input.
 #pragma once
 
+#include <functional>
+
 #include "tools/scene.hpp"
 #include "workloads/run/run.hpp"
 
@@ -15,8 +17,13 @@ namespace tools {
 // an error inside a named CSV file).
 workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals = false);
 
-// `t800sim check FILE`: a topology file, or a scene checked as `run` would (inputs_from). Returns
-// the one-line summary of tools::check_file.
+// Runs `code`; a workloads::SettingError it throws becomes a network::ConfigError at the scene line
+// or flag that set the first of its keys.
+void at_scene_keys(const Scene& scene, const std::function<void()>& code);
+
+// `t800sim check FILE`: a topology file, or a scene checked as `run` would check it (inputs_from)
+// and realised as `run` would realise it, without simulating (workloads::realise). Returns the
+// one-line summary of tools::check_file.
 std::string check_input(const std::string& path);
 
 }  // namespace tools

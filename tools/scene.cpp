@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
+#include <optional>
 #include <set>
 
 #include "network/families.hpp"
@@ -168,7 +169,7 @@ class SceneReader {
   network::Topology generated(const toml::table& net, const toml::node& family) const;
   network::Topology from_file(const toml::node& path) const;
   void workload(Scene& scene) const;
-  void plugin(const toml::node& path) const;
+  void plugin(const toml::node& path, const toml::node* kind) const;
   void placement(Scene& scene) const;
   void calibration(Scene& scene) const;
   void calibration_values(const toml::table& t, Scene& scene) const;
@@ -446,14 +447,18 @@ workloads::ParamValue SceneReader::fallback(const workloads::ParamSpec& spec) co
   return scene_relative(std::get<std::string>(spec.default_value));
 }
 
-// workload.plugin, relative to the scene file: its kinds exist once it is loaded.
-void SceneReader::plugin(const toml::node& path) const {
+// workload.plugin, relative to the scene file: its kinds exist once it is loaded. An error names
+// the kind the scene wanted from it, if it says.
+void SceneReader::plugin(const toml::node& path, const toml::node* kind) const {
   const std::string name = text(path, "workload.plugin");
   if (name.empty()) fail(path, "workload.plugin is empty: give the path of a plugin (lib*.so)");
   try {
     t800sim::detail::load_plugin(scene_relative(name));
   } catch (const t800sim::detail::PluginError& e) {
-    fail(path, std::string("workload.plugin: ") + e.what());
+    const std::optional<std::string> wanted =
+        kind ? kind->value<std::string>() : std::optional<std::string>();
+    fail(path, "workload.plugin" + (wanted ? " (for workload kind " + *wanted + ")" : "") + ": " +
+                   e.what());
   }
 }
 
@@ -461,7 +466,7 @@ void SceneReader::workload(Scene& scene) const {
   const toml::node* node = root_.get("workload");
   const toml::table* workload_table = node ? node->as_table() : nullptr;
   if (const toml::node* path = workload_table ? workload_table->get("plugin") : nullptr)
-    plugin(*path);
+    plugin(*path, workload_table->get("kind"));
   std::vector<std::string> kinds;
   for (const workloads::WorkloadInfo& w : workloads::workload_catalog()) kinds.push_back(w.kind);
   if (!node) fail(root_, "no [workload] table: add one with kind = one of " + join(kinds));

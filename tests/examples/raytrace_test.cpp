@@ -178,7 +178,9 @@ TEST(RaytraceFarm, ANetworkWithoutAWorkerIsAnErrorNamingTheNetwork) {
   const auto o = cli_test::run("run " + path + " 2>&1");
   EXPECT_EQ(o.exit_code, 2) << o.out;
   EXPECT_NE(
-      o.out.find(path + ":2:12: error: the farm needs a worker processor beside the master's P0"),
+      o.out.find(path +
+                 ":2:12: error: workload raytrace-farm: the farm needs a worker processor beside "
+                 "the master's P0"),
       std::string::npos)
       << o.out;
 }

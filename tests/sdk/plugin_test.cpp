@@ -9,39 +9,12 @@
 #include <nlohmann/json.hpp>
 
 #include "../cli/cli_fixtures.hpp"
+#include "plugin_scene.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// A scene in a fresh directory naming `plugin` (relative to the scene) on its line 6; the plugin
-// file `variant` of the test tree is copied to dir/plugins/ first, if given.
-struct PluginScene {
-  fs::path dir, file;
-  PluginScene(const std::string& variant, const std::string& plugin) {
-    dir = fs::temp_directory_path() /
-          ("t800sim-plugin-test-" + std::to_string(getpid()) + "-" +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir / "plugins");
-    if (!variant.empty())
-      fs::copy_file(fs::path(T800SIM_TEST_PLUGIN_DIR) / (variant + ".so"),
-                    dir / "plugins" / (variant + ".so"));
-    file = dir / "scene.toml";
-    std::ofstream(file) << "[network]\n"
-                           "topology = \"" T800SIM_SOURCE_DIR
-                           "/configs/topologies/single.toml\"\n"
-                           "processor = \"T800-20\"\n"
-                           "\n"
-                           "[workload]\n"
-                           "plugin = \"" +
-                               plugin +
-                               "\"\n"
-                               "kind = \"tiny_busy\"\n"
-                               "cycles = 2000\n";
-  }
-  ~PluginScene() { fs::remove_all(dir); }
-};
+using plugin_test::PluginScene;
 
 TEST(SdkPlugin, RunLoadsThePluginRelativeToTheSceneAndRunsItsKind) {
   const PluginScene scene("tiny", "plugins/tiny.so");
@@ -75,7 +48,7 @@ void expect_refused(const PluginScene& scene, const std::string& plugin_path,
                     const std::string& why) {
   const auto o = cli_test::run("run " + scene.file.string() + " --json 2>&1");
   EXPECT_EQ(o.exit_code, 2) << o.out;
-  EXPECT_NE(o.out.find(scene.file.string() + ":6:"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find(scene.plugin_line()), std::string::npos) << o.out;
   EXPECT_NE(o.out.find(plugin_path), std::string::npos) << o.out;
   EXPECT_NE(o.out.find(why), std::string::npos) << o.out;
   EXPECT_EQ(o.out.find("simulated_us"), std::string::npos) << o.out;

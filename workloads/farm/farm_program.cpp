@@ -197,10 +197,11 @@ std::unique_ptr<t800sim::Builder> spawn_host_and_master(network::Machine& m, int
   b->process("master", nullptr).placed_on(m.node_name(master));
   const t800sim::Chan<State> state = b->channel<State>("state", "host", "master");
   t800sim::detail::realise("farm host", *b, m, {});
-  t800sim::detail::spawn(m, network::Machine::kHost, "host", [state, label](t800sim::Process& p) {
-    p.out(state.out(), t800sim::value_of<State>{}, label);
-  });
-  t800sim::detail::spawn(m, master, "master", [state, body](t800sim::Process& p) {
+  t800sim::detail::spawn("dynamics farm", m, network::Machine::kHost, "host",
+                         [state, label](t800sim::Process& p) {
+                           p.out(state.out(), t800sim::value_of<State>{}, label);
+                         });
+  t800sim::detail::spawn("dynamics farm", m, master, "master", [state, body](t800sim::Process& p) {
     p.in(state.in());
     body(p);
   });

@@ -32,7 +32,7 @@ class EngineT : public EliminationPipeline::Engine {
   // The host sends the system and is done: Tp ends on L4, and nothing moves after it.
   void build(network::Machine& machine) override {
     program_.build(machine, network::Machine::kHost, Serve::once);
-    t800sim::detail::spawn(machine, network::Machine::kHost, "host",
+    t800sim::detail::spawn("elimination pipeline", machine, network::Machine::kHost, "host",
                            [this](t800sim::Process& p) { program_.send(p, system_); });
   }
 

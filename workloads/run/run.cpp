@@ -8,6 +8,7 @@
 
 #include "network/families.hpp"
 
+#include "workloads/run/process_error.hpp"
 #include "workloads/run/workload.hpp"
 
 namespace workloads {
@@ -178,11 +179,16 @@ ResultValue fault_value(const network::FaultRecord& f) {
 
 }  // namespace
 
-std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& in) {
-  std::unique_ptr<Workload> workload = make_workload(
+Realised realise(const RunInputs& in) {
+  Realised r;
+  r.machine = std::make_unique<network::Machine>(in.topology, in.options);
+  for (const network::FaultSpec& f : in.faults) r.machine->faults().add(f);
+  network::arm_faults(*r.machine);
+  r.workload = make_workload(
       in.kind, WorkloadContext{in.params, in.topology, in.robot.get(), &in.placement});
-  workload->build(machine);
-  return workload;
+  r.workload->build(*r.machine);
+  r.machine->prepare();
+  return r;
 }
 
 namespace {
@@ -199,17 +205,20 @@ void leave_standing(std::unique_ptr<network::Machine> machine) {
 
 RunReport run(const RunInputs& in) {
   const auto start = std::chrono::steady_clock::now();
-  auto owned = std::make_unique<network::Machine>(in.topology, in.options);
-  network::Machine& machine = *owned;
-  for (const network::FaultSpec& f : in.faults) machine.faults().add(f);
-  network::arm_faults(machine);
-  std::unique_ptr<Workload> workload = build_workload(machine, in);
+  Realised realised = realise(in);
+  network::Machine& machine = *realised.machine;
+  const std::unique_ptr<Workload>& workload = realised.workload;
   RunReport report;
   report.name = in.name;
   report.setting = setting_of(in);
   report.fidelity = in.options.fidelity;
   report.run_time_checks = in.options.checked;
-  report.blocked = machine.run();
+  try {
+    report.blocked = machine.run();
+  } catch (...) {
+    throw_recorded_process_error();  // in place of SystemC's report of it
+    throw;
+  }
   report.wait_cycle = machine.wait_cycle();
   report.limit = machine.limit_reached();
   report.simulated_us = machine.simulated_us();
@@ -228,7 +237,7 @@ RunReport run(const RunInputs& in) {
     }
   }
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!machine.tears_down()) leave_standing(std::move(owned));
+  if (!machine.tears_down()) leave_standing(std::move(realised.machine));
   return report;
 }
 

@@ -102,12 +102,20 @@ struct RunReport {
   ResultValue to_value() const;
 };
 
-// Runs one simulation. Only one per OS process (SystemC cannot be restarted).
+// Runs one simulation. Only one per OS process (SystemC cannot be restarted). An exception a
+// process's body let out is thrown as the workloads::ProcessError recorded for it.
 RunReport run(const RunInputs& inputs);
 
 class Workload;
-// What run() does before running: the workload of `inputs` built on `machine` (its processes
-// placed, its code declared). Kept alive while the machine is used.
-std::unique_ptr<Workload> build_workload(network::Machine& machine, const RunInputs& inputs);
+// What run() does before simulating, and all `t800sim check` and `listing` do: the machine
+// elaborated with its faults armed, the workload of `inputs` built on it (its processes placed,
+// its channels joined, its code declared) and the processors' memory placed. Whatever input run()
+// refuses before the first simulated event, this refuses. The workload is kept while the machine
+// is used (its processes' bodies refer to it).
+struct Realised {
+  std::unique_ptr<network::Machine> machine;
+  std::unique_ptr<Workload> workload;
+};
+Realised realise(const RunInputs& inputs);
 
 }  // namespace workloads
