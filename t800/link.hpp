@@ -10,16 +10,16 @@
 // concurrently with the CPUs.
 //
 // Fidelity (t800/fidelity.hpp): at `packet` every packet is simulated at its own time; its end is
-// an event only where another party can act on it (link.cpp, send_data_packet), and a message that
-// nothing can interleave with (the other direction silent, no fault, no deadline) is one run: every
-// packet's time in closed form from one event, handed over to the per-packet steps at its last
-// byte or at the instant anything changes (the other direction starts, a resetch). At `message` a
-// message follows the closed form of LinkTiming -- a handful of events per message instead of
-// several per byte -- which is exact while the other direction is silent. At `automatic` a message
-// starts in closed form only when the other direction is silent, and when the other direction
-// starts meanwhile, the message in flight is handed over to the packet level at that instant: its
-// byte, packet and acknowledge state is worked out from the closed form (hand_over), so the result
-// is the packet level's.
+// an event only where another party can act on it (link_packets.cpp, send_data_packet), and a
+// message that nothing can interleave with (the other direction silent, no fault, no deadline) is
+// one run: every packet's time in closed form from one event, handed over to the per-packet steps
+// at its last byte or at the instant anything changes (the other direction starts, a resetch). At
+// `message` a message follows the closed form of LinkTiming -- a handful of events per message
+// instead of several per byte -- which is exact while the other direction is silent. At `automatic`
+// a message starts in closed form only when the other direction is silent, and when the other
+// direction starts meanwhile, the message in flight is handed over to the packet level at that
+// instant: its byte, packet and acknowledge state is worked out from the closed form (hand_over),
+// so the result is the packet level's.
 #pragma once
 
 #include <cstdint>
@@ -126,8 +126,8 @@ class Link : public sc_core::sc_module {
   std::int64_t closed_form_messages() const { return closed_form_messages_; }
   std::int64_t handovers() const { return handovers_; }
   // At `packet`, a message whose packets nothing can interleave with is planned as one run (see
-  // link.cpp, closed_form_allowed); off, every packet is its own step: the reference the runs are
-  // tested against.
+  // link_closed_form.cpp, closed_form_allowed); off, every packet is its own step: the reference
+  // the runs are tested against.
   void plan_packet_runs(bool on) { packet_runs_ = on; }
 
  private:
@@ -270,7 +270,8 @@ class Link : public sc_core::sc_module {
   // wire_wake or by the end of the packet it carries.
   void on_wire(int wire);
   // Starts the wire's next packet at this very delta instead of waking its method for the next
-  // one, where nothing else can change what it starts (see link.cpp); false: woken as usual.
+  // one, where nothing else can change what it starts (see link_packets.cpp); false: woken as
+  // usual.
   bool start_at_once(int wire);
   void finish_packet(int wire);
   bool start_packet(int wire);  // false: no wake needed (nothing sent, or its end settled)

@@ -27,7 +27,7 @@ struct Message {
   std::int64_t bytes = 0;  // on the wire: a routed message's header included
   std::any payload;        // the writer's value, of any type (the reader casts it back)
   std::string label;       // for traces: what the message carries
-  RouteHeader route;       // on a routed channel, the routers' header ahead of the value
+  RouteHeader route{};     // on a routed channel, the routers' header ahead of the value
 };
 
 }  // namespace t800
