@@ -285,6 +285,7 @@ class Link : public sc_core::sc_module {
   bool ack_end_settled_now(int wire) const;
   void finish_ack_packet(int wire, const sc_core::sc_time& start);
   void finish_in_flight(int wire);
+  void release_sender(int d);
   // closed form
   bool closed_form_allowed(int d) const;
   void start_closed_form(int d);

@@ -133,13 +133,7 @@ void Link::closed_form_sender_done(int di) {
   d.closed_form.sender_done = true;
   record_closed_form_packets(di, bytes, bytes);
   d.dma_sent.add(bytes, d.closed_form.start);
-  d.activity.message_done(bytes, d.queue.front().label);
-  take_payload(di);
-  d.queue.pop_front();
-  d.sent = d.acked = 0;
-  ++d.completed;
-  d.sent_event.notify(SC_ZERO_TIME);
-  if (end(di)) end(di)->transfer_end();
+  release_sender(di);
   d.may_send = false;
   d.process_event.notify(process_delay_);
 }

@@ -195,17 +195,21 @@ void Link::finish_ack_packet(int w, const sc_time& start) {
   Direction& d = dir_[acked_direction];
   if (d.queue.empty()) return;  // its message was abandoned (reset_output)
   ++d.acked;
-  if (d.acked ==
-      d.queue.front().bytes) {  // the whole message is acknowledged: the sender may go on
-    d.activity.message_done(d.acked, d.queue.front().label);
-    take_payload(acked_direction);
-    d.queue.pop_front();
-    d.sent = d.acked = 0;
-    ++d.completed;
-    d.sent_event.notify(SC_ZERO_TIME);
-    if (end(acked_direction)) end(acked_direction)->transfer_end();
-  }
+  // the whole message is acknowledged: the sender may go on
+  if (d.acked == d.queue.front().bytes) release_sender(acked_direction);
   d.process_event.notify(process_delay_);
+}
+
+// The sender's message is all acknowledged: it leaves the queue and its process goes on.
+void Link::release_sender(int di) {
+  Direction& d = dir_[di];
+  d.activity.message_done(d.queue.front().bytes, d.queue.front().label);
+  take_payload(di);
+  d.queue.pop_front();
+  d.sent = d.acked = 0;
+  ++d.completed;
+  d.sent_event.notify(SC_ZERO_TIME);
+  if (end(di)) end(di)->transfer_end();
 }
 
 // A packet that was on the wire when its message was handed over: it ends as if sent at this level.
