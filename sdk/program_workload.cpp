@@ -4,6 +4,7 @@
 
 #include "network/config_error.hpp"
 #include "network/machine.hpp"
+#include "network/unwound_frames.hpp"
 #include "sdk/plugin_loader.hpp"
 #include "sdk/realise.hpp"
 #include "workloads/run/thrown.hpp"
@@ -13,13 +14,13 @@ namespace t800sim::detail {
 
 namespace {
 
-// What the program's code throws, named after the workload; anything but the errors of settings
+// What the program's code threw, named after the workload; anything but the errors of settings
 // and scene lines becomes `Failure`.
 template <class Failure>
-void named_after_workload(const std::string& label, const std::string& step,
-                          const std::function<void()>& code) {
+[[noreturn]] void throw_named(const std::string& label, const std::string& step,
+                              const std::exception_ptr& thrown) {
   try {
-    code();
+    std::rethrow_exception(thrown);
   } catch (const workloads::SettingError& e) {
     throw workloads::SettingError(e.keys(), "workload " + label + ": " + e.what());
   } catch (const network::ConfigError&) {
@@ -28,7 +29,18 @@ void named_after_workload(const std::string& label, const std::string& step,
     throw std::invalid_argument("workload " + label + ": " + e.what());
   } catch (...) {
     throw Failure("workload " + label + ": " + step + " threw " +
-                  workloads::describe_thrown(std::current_exception()));
+                  workloads::describe_thrown(thrown));
+  }
+}
+
+template <class Failure>
+void named_after_workload(const std::string& label, const std::string& step,
+                          const std::function<void()>& code) {
+  try {
+    code();
+  } catch (...) {
+    network::forget_unwound_frames();  // `code` may be results(), after a simulation
+    throw_named<Failure>(label, step, std::current_exception());
   }
 }
 

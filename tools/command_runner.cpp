@@ -2,8 +2,8 @@
 #include <iostream>
 
 #include "network/config_error.hpp"
+#include "network/unwound_frames.hpp"
 #include "tools/commands.hpp"
-#include "tools/unwound_frames.hpp"
 #include "workloads/run/thrown.hpp"
 
 namespace tools {
@@ -29,7 +29,7 @@ void run_command(const std::function<int()>& body) {
   try {
     code = body();
   } catch (...) {
-    forget_unwound_frames();
+    network::forget_unwound_frames();
     const CommandError error = command_error(std::current_exception());
     std::cerr << error.message << "\n";
     code = error.code;

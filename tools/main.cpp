@@ -7,9 +7,9 @@
 #include <CLI/CLI.hpp>
 #include <systemc>
 
+#include "network/unwound_frames.hpp"
 #include "tools/cli_errors.hpp"
 #include "tools/commands.hpp"
-#include "tools/unwound_frames.hpp"
 
 int sc_main(int argc, char* argv[]) {
   CLI::App app{
@@ -30,7 +30,7 @@ int sc_main(int argc, char* argv[]) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    tools::forget_unwound_frames();
+    network::forget_unwound_frames();
     if (const auto message =
             tools::explain_parse_error(app, std::vector<std::string>(argv + 1, argv + argc), e)) {
       std::cerr << "error: " << *message << "\n";
@@ -39,7 +39,7 @@ int sc_main(int argc, char* argv[]) {
     const int code = app.exit(e);
     return code == 0 ? tools::kExitOk : tools::kExitBadInput;
   } catch (const tools::CommandExit& e) {
-    tools::forget_unwound_frames();
+    network::forget_unwound_frames();
     return e.code;
   }
   return tools::kExitOk;

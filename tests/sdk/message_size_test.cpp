@@ -50,15 +50,8 @@ TEST(MessageSize, TheLargestCountRunsAndTakesItsTime) {
   EXPECT_GT(us, 1e6);
 }
 
-// One simulation per process: one length per test. The error is thrown on the writer's SystemC
-// coroutine stack and unwinds through SystemC to sc_start's caller: AddressSanitizer cannot follow
-// an exception across that stack switch ("ignoring requested __asan_handle_no_return",
-// github.com/google/sanitizers/issues/189) and reports the stale stack it left as overflows, so
-// under ASan these two tests are skipped; the plain build runs them.
+// One simulation per process: one length per test.
 void expect_refused(std::int64_t bytes) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "an exception across a SystemC coroutine stack: see above";
-#endif
   const std::string e = send_error(bytes);
   EXPECT_NE(e.find("process writer: a message of " + std::to_string(bytes) +
                    " bytes on channel big: a T800 message is 0 to 2147483647 bytes"),

@@ -9,6 +9,7 @@
 #include "network/families.hpp"
 #include "network/faults.hpp"
 #include "network/machine.hpp"
+#include "network/unwound_frames.hpp"
 #include "sdk/program_workload.hpp"
 #include "t800sim/alt.hpp"
 #include "t800sim/program.hpp"
@@ -42,7 +43,12 @@ Outcome run(P* program, const network::Topology& topology,
                                             context);
   workload.build(machine);
   Outcome o;
-  o.blocked = machine.run();
+  try {
+    o.blocked = machine.run();
+  } catch (...) {
+    network::forget_unwound_frames();  // as workloads::run does, before the machine is destroyed
+    throw;
+  }
   o.simulated_us = machine.simulated_us();
   o.faults = machine.faults().records();
   if (o.blocked.empty()) o.results = workload.results(machine);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "network/families.hpp"
+#include "network/unwound_frames.hpp"
 
 #include "workloads/run/process_error.hpp"
 #include "workloads/run/workload.hpp"
@@ -203,9 +204,11 @@ void leave_standing(std::unique_ptr<network::Machine> machine) {
 
 }  // namespace
 
-RunReport run(const RunInputs& in) {
-  const auto start = std::chrono::steady_clock::now();
-  Realised realised = realise(in);
+namespace {
+
+// Runs the realised scene and gathers its report; what it throws leaves through run(), which
+// clears the unwound frames before `realised` (program, builder, machine) is destroyed.
+RunReport simulate(const RunInputs& in, Realised& realised) {
   network::Machine& machine = *realised.machine;
   const std::unique_ptr<Workload>& workload = realised.workload;
   RunReport report;
@@ -236,8 +239,23 @@ RunReport run(const RunInputs& in) {
       report.failure = failure_of(report.workload);
     }
   }
+  return report;
+}
+
+}  // namespace
+
+RunReport run(const RunInputs& in) {
+  const auto start = std::chrono::steady_clock::now();
+  Realised realised = realise(in);
+  RunReport report;
+  try {
+    report = simulate(in, realised);
+  } catch (...) {
+    network::forget_unwound_frames();
+    throw;
+  }
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!machine.tears_down()) leave_standing(std::move(realised.machine));
+  if (!realised.machine->tears_down()) leave_standing(std::move(realised.machine));
   return report;
 }
 
