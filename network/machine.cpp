@@ -5,6 +5,9 @@
 #include <map>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "network/limits.hpp"
 #include "network/transport/direct_link.hpp"
 #include "network/transport/link_io.hpp"
 #include "network/transport/rendezvous.hpp"
@@ -272,12 +275,26 @@ void Machine::spawn_again(Process& record, t800::Priority priority, Process::Bod
   start(record, std::move(body));
 }
 
+// A new SystemC thread is refused past the stated limit rather than left to fail in SystemC
+// (E518) or exhaust the host; threads that finished are reused, so the limit counts processes
+// alive at once.
+void Machine::check_thread_limit(const Process& p) const {
+  const std::int64_t threads = std::int64_t(handles_.size() + pending_.size());
+  if (threads >= kMaxProcesses)
+    throw std::runtime_error(fmt::format(
+        "process {}: {} processes would be alive at once, more than the {} one simulation holds "
+        "(each is a SystemC thread with its own stack; network/limits.hpp)",
+        p.name(), threads + 1, kMaxProcesses));
+}
+
 void Machine::start(Process& p, Process::Body body) {
   if (!sc_core::sc_is_running()) {
+    check_thread_limit(p);
     pending_.emplace_back(&p, std::move(body));
     return;
   }
   if (idle_threads_.empty()) {
+    check_thread_limit(p);
     threads_.push_back(std::make_unique<PooledThread>());
     PooledThread* t = threads_.back().get();
     t->process = &p;

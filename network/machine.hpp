@@ -157,6 +157,7 @@ class Machine {
   std::vector<std::unique_ptr<Process>> processes_;
   std::uint64_t spawned_ = 0;
   void start(Process& p, Process::Body body);
+  void check_thread_limit(const Process& p) const;
   std::vector<std::pair<Process*, Process::Body>> pending_;
   // SystemC threads that ran a process spawned during the run (a PAR's branch) and wait for the
   // next: creating a thread allocates and maps a stack, the most expensive thing a PAR would

@@ -1,5 +1,8 @@
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "network/limits.hpp"
 #include "network/machine.hpp"
 #include "network/topology.hpp"
 #include "t800sim/program.hpp"
@@ -43,14 +46,22 @@ ProcessDecl& Builder::add(const std::string& name, int n, bool group, Process::I
   if (n < 1)
     throw std::invalid_argument("process group " + name + ": needs at least one process, not " +
                                 std::to_string(n));
-  for (const ProcessDecl& p : processes_)
-    if (p.name == name) throw std::invalid_argument("process " + name + " is declared twice");
+  if (process_index_.count(name))
+    throw std::invalid_argument("process " + name + " is declared twice");
+  if (n > network::kMaxProcesses - process_count_)
+    throw std::invalid_argument(fmt::format(
+        "process {}{}: the program would have {} processes, more than the {} one simulation "
+        "holds (each is a SystemC thread with its own stack; network/limits.hpp)",
+        name, group ? fmt::format(" (a group of {})", n) : "", process_count_ + n,
+        network::kMaxProcesses));
   ProcessDecl d;
   d.name = name;
   d.count = n;
   d.group = group;
   d.body = std::move(body);
   processes_.push_back(std::move(d));
+  process_index_.emplace(name, &processes_.back());
+  process_count_ += n;
   return processes_.back();
 }
 
@@ -65,6 +76,13 @@ detail::ChannelSlot* Builder::end(const std::string& name, const std::string& pr
   if (name.empty()) throw std::invalid_argument("a channel needs a name");
   detail::ChannelSlot*& slot = channel_index_[name];
   if (!slot) {
+    if (std::int64_t(channels_.size()) >= network::kMaxChannels) {
+      channel_index_.erase(name);
+      throw std::invalid_argument(fmt::format(
+          "channel {}: the program would have more than the {} channels one simulation holds "
+          "(network/limits.hpp)",
+          name, network::kMaxChannels));
+    }
     channels_.push_back({name, protocol, {}, {}, -1, 0, nullptr});
     slot = &channels_.back();
   }

@@ -15,6 +15,7 @@
 //   };
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <memory>
@@ -153,7 +154,9 @@ class Builder {
                            const std::string& process, bool writer);
 
   Network network_;
-  std::deque<ProcessDecl> processes_;         // stable addresses: declarations are returned
+  std::deque<ProcessDecl> processes_;  // stable addresses: declarations are returned
+  std::unordered_map<std::string, const ProcessDecl*> process_index_;  // by name, as channels
+  std::int64_t process_count_ = 0;            // a group's members each counted (network/limits.hpp)
   std::deque<detail::ChannelSlot> channels_;  // stable addresses: handles point into it
   // By name: a program of thousands of channels declares each end in constant time.
   std::unordered_map<std::string, detail::ChannelSlot*> channel_index_;
