@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "network/config_error.hpp"
+#include "tools/cli_numbers.hpp"
 #include "tools/commands.hpp"
 #include "tools/report_format.hpp"
 #include "tools/run_inputs.hpp"
@@ -63,12 +64,6 @@ struct RunArgs {
   double max_sim_s = 0, max_wall_s = 0;
 };
 
-void check_limit(double seconds, const char* flag) {
-  if (!(seconds >= 0) || !std::isfinite(seconds))
-    throw std::invalid_argument(std::string(flag) + " " + fmt::format("{}", seconds) +
-                                ": give a number of seconds, 0 for no limit");
-}
-
 std::string limit_text(const RunArgs& args, const workloads::RunReport& report) {
   return report.limit == network::Limit::sim_time
              ? fmt::format("--max-sim-time {} s", args.max_sim_s)
@@ -76,8 +71,6 @@ std::string limit_text(const RunArgs& args, const workloads::RunReport& report) 
 }
 
 int run_scene(const RunArgs& args) {
-  check_limit(args.max_sim_s, "--max-sim-time");
-  check_limit(args.max_wall_s, "--max-wall-time");
   Scene scene = load_scene(args.scene, args.overrides);
   for (const std::string& f : args.faults)
     scene.faults.push_back(parse_fault_flag(f, scene.topology));
@@ -132,10 +125,10 @@ void add_run_command(CLI::App& app) {
   cmd->add_option(
          "--max-sim-time", args->max_sim_s,
          "stop the run after this many seconds of simulated time (exit code 4; 0: no limit)")
-      ->type_name("SECONDS");
+      ->check(seconds_limit());
   cmd->add_option("--max-wall-time", args->max_wall_s,
                   "stop the run after this many seconds of host time (exit code 4; 0: no limit)")
-      ->type_name("SECONDS");
+      ->check(seconds_limit());
   cmd->callback([args] { run_command([&] { return run_scene(*args); }); });
 }
 

@@ -19,6 +19,7 @@
 
 #include "network/config_error.hpp"
 #include "tools/child_run.hpp"
+#include "tools/cli_numbers.hpp"
 #include "tools/commands.hpp"
 #include "tools/scene.hpp"
 #include "tools/scene_faults.hpp"
@@ -364,7 +365,6 @@ int emit_jobs(const SweepArgs& a, const Sweep& s) {
 int sweep(const SweepArgs& a) {
   if (!fs::exists(a.scene)) throw std::invalid_argument(a.scene + ": no such scene file");
   if (a.jobs < 1) throw std::invalid_argument("-j " + std::to_string(a.jobs) + ": give at least 1");
-  if (a.timeout_s < 0) throw std::invalid_argument("--timeout: give seconds, 0 for no limit");
   if (a.emit_jobs.empty() && a.output.empty())
     throw std::invalid_argument(
         "-o FILE is required (or --emit-jobs FILE to write the jobs instead)");
@@ -407,7 +407,8 @@ void add_sweep_command(CLI::App& app) {
       "results CSV; points already in it with status ok are not run again (with --point: the "
       "point's JSON result)");
   cmd->add_option("--timeout", a->timeout_s,
-                  "seconds a point may run before it is stopped (0: no limit)");
+                  "seconds a point may run before it is stopped (0: no limit)")
+      ->check(seconds_limit());
   cmd->add_option(
       "--emit-jobs", a->emit_jobs,
       "write one shell command per point to this file instead of running (for GNU parallel or a "
@@ -417,7 +418,8 @@ void add_sweep_command(CLI::App& app) {
                   "the --emit-jobs file's name + -results)");
   auto* point = cmd->add_option("--point", a->point,
                                 "run only point I (0-based; what each emitted job does) and write "
-                                "its JSON result to -o");
+                                "its JSON result to -o")
+                    ->check(index_from_zero());
   cmd->callback([a, point] {
     a->point_given = point->count() > 0;
     run_command([&] { return sweep(*a); });

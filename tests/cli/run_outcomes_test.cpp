@@ -127,9 +127,18 @@ TEST(RunOutcome, ALimitThatIsNotReachedChangesNothing) {
 }
 
 TEST(RunOutcome, BadLimitsNameTheFlag) {
-  const auto o = cli_test::run("run configs/scenes/pingpong.toml --max-wall-time -1 2>&1");
-  EXPECT_EQ(o.exit_code, 2) << o.out;
-  EXPECT_NE(o.out.find("--max-wall-time -1: give a number of seconds"), std::string::npos) << o.out;
+  // A limit that is negative, not finite or not a number would otherwise stop the run at once or
+  // never: each is refused before anything runs, naming the flag and the value given.
+  for (const std::string flag : {"--max-wall-time", "--max-sim-time"}) {
+    for (const std::string value : {"-1", "nan", "inf", "abc"}) {
+      const auto o =
+          cli_test::run("run configs/scenes/pingpong.toml " + flag + " " + value + " 2>&1");
+      EXPECT_EQ(o.exit_code, 2) << flag << " " << value << "\n" << o.out;
+      EXPECT_NE(o.out.find(flag + ": '" + value + "' is not a number of seconds"),
+                std::string::npos)
+          << o.out;
+    }
+  }
 }
 
 }  // namespace

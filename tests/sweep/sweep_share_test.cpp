@@ -121,7 +121,26 @@ TEST(SweepShare, ANegativePointIsAnError) {
       run("sweep configs/scenes/pingpong.toml --vary workload.bytes=8,16 --point -1 -o "
           "/nonexistent/p.json 2>&1");
   EXPECT_EQ(o.exit_code, 2) << o.out;
-  EXPECT_NE(o.out.find("--point -1: this sweep has points 0 to 1"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("--point: '-1' is not an index"), std::string::npos) << o.out;
+}
+
+TEST(SweepShare, APointPastTheLastIsAnError) {
+  const auto o =
+      run("sweep configs/scenes/pingpong.toml --vary workload.bytes=8,16 --point 2 -o "
+          "/nonexistent/p.json 2>&1");
+  EXPECT_EQ(o.exit_code, 2) << o.out;
+  EXPECT_NE(o.out.find("--point 2: this sweep has points 0 to 1"), std::string::npos) << o.out;
+}
+
+TEST(SweepShare, ATimeoutThatIsNotSecondsIsAnError) {
+  for (const std::string value : {"nan", "-3", "inf"}) {
+    const auto o = run("sweep configs/scenes/pingpong.toml --vary workload.bytes=8,16 --timeout " +
+                       value + " -o /nonexistent/p.json 2>&1");
+    EXPECT_EQ(o.exit_code, 2) << value << "\n" << o.out;
+    EXPECT_NE(o.out.find("--timeout: '" + value + "' is not a number of seconds"),
+              std::string::npos)
+        << o.out;
+  }
 }
 
 }  // namespace
