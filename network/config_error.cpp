@@ -2,14 +2,35 @@
 
 #include <utility>
 
+#include <fmt/format.h>
+
 namespace network {
 
 namespace {
 
+// One line, whatever it echoes: a newline, a NUL (which would end what()) or another control
+// character in a value or a file name is written as an escape.
+std::string one_line(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n')
+      out += "\\n";
+    else if (c == '\t')
+      out += "\\t";
+    else if (u < 0x20 || u == 0x7f)
+      out += fmt::format("\\x{:02x}", u);
+    else
+      out += c;
+  }
+  return out;
+}
+
 // GCC style ("file:line:column: error: message") so editors and IDEs can jump to the spot.
-std::string format(const SourcePos& where, const std::string& message) {
+std::string format(const SourcePos& where, const std::string& raw_message) {
+  const std::string message = one_line(raw_message);
   if (where.file.empty()) return bounded_message("error: " + message);
-  std::string text = where.file;
+  std::string text = one_line(where.file);
   if (where.line > 0) {
     text += ':' + std::to_string(where.line);
     if (where.column > 0) text += ':' + std::to_string(where.column);

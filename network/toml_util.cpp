@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <fmt/format.h>
+
 #include "network/toml_limits.hpp"
 
 namespace network {
@@ -16,25 +18,37 @@ SourcePos pos_of(const toml::source_region& source, const std::string& file) {
 
 std::string type_name(const toml::node& node) {
   switch (node.type()) {
-    case toml::node_type::string: return "string";
-    case toml::node_type::integer: return "integer";
-    case toml::node_type::floating_point: return "floating-point number";
-    case toml::node_type::boolean: return "boolean";
-    case toml::node_type::table: return "table";
-    case toml::node_type::array: return "array";
-    case toml::node_type::date: return "date";
-    case toml::node_type::time: return "time";
-    case toml::node_type::date_time: return "date-time";
-    case toml::node_type::none: break;
+    case toml::node_type::string:
+      return "string";
+    case toml::node_type::integer:
+      return "integer";
+    case toml::node_type::floating_point:
+      return "floating-point number";
+    case toml::node_type::boolean:
+      return "boolean";
+    case toml::node_type::table:
+      return "table";
+    case toml::node_type::array:
+      return "array";
+    case toml::node_type::date:
+      return "date";
+    case toml::node_type::time:
+      return "time";
+    case toml::node_type::date_time:
+      return "date-time";
+    case toml::node_type::none:
+      break;
   }
   return "nothing";
 }
 
-// Missing files and directories get a plain message; toml++ would read a directory as an empty file.
+// Missing files and directories get a plain message; toml++ would read a directory as an empty
+// file.
 toml::table parse_toml_file(const std::string& path, const std::string& what) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw ConfigError({path, 0, 0}, "this is a directory, not a " + what);
+  if (fs::is_directory(path, ec))
+    throw ConfigError({path, 0, 0}, "this is a directory, not a " + what);
   if (!fs::exists(path, ec)) throw ConfigError({path, 0, 0}, "no such " + what);
   const auto size = fs::file_size(path, ec);
   if (!ec && size > TomlLimits::kMaxBytes)  // not read at all (a device or a pipe has no size)
@@ -72,11 +86,16 @@ std::string join(const std::vector<std::string>& items) {
   return text;
 }
 
+// The shortest text that reads back as the same double (fmt's default), so a message never rounds
+// a value into another (10.000000000000002 is not "10.") nor spells 1e308 in 309 digits.
 std::string number_text(double value) {
-  if (std::abs(value) < 1e15 && value == std::floor(value)) return std::to_string(static_cast<long long>(value));
-  std::string text = std::to_string(value);
-  while (text.back() == '0') text.pop_back();
-  return text;
+  return fmt::format("{}", value);
+}
+
+// An integer exactly as it was read: 2^63 - 1 is not the double 9223372036854775808.
+std::string number_text(const toml::node& node) {
+  if (const auto* i = node.as_integer()) return std::to_string(i->get());
+  return number_text(number(node));
 }
 
 std::string plural(std::size_t n, const char* word) {

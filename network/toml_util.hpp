@@ -1,5 +1,6 @@
-// What every reader of a TOML configuration file needs: positions for errors, plain type names, reading a file
-// with clear errors, and the small text helpers of messages. Used by topology, scene, robot and paper files.
+// What every reader of a TOML configuration file needs: positions for errors, plain type names,
+// reading a file with clear errors, and the small text helpers of messages. Used by topology,
+// scene, robot and paper files.
 #pragma once
 
 #include <string>
@@ -11,8 +12,8 @@
 
 namespace network {
 
-// Where a node is. A node that came from somewhere other than `file` (a --set override parsed on its own)
-// keeps its origin's name but not its line numbers, which would mean nothing in `file`.
+// Where a node is. A node that came from somewhere other than `file` (a --set override parsed on
+// its own) keeps its origin's name but not its line numbers, which would mean nothing in `file`.
 SourcePos pos_of(const toml::source_region& source, const std::string& file);
 
 // "string", "integer", "floating-point number", ... for "expected X, got Y" messages.
@@ -31,6 +32,7 @@ double number(const toml::node& node);
 
 std::string join(const std::vector<std::string>& items);  // "a, b, c"
 std::string number_text(double value);                    // 20 -> "20", 2.5 -> "2.5"
-std::string plural(std::size_t n, const char* word);       // "1 link", "3 links"
+std::string number_text(const toml::node& node);          // an integer node exactly
+std::string plural(std::size_t n, const char* word);      // "1 link", "3 links"
 
 }  // namespace network

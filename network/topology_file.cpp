@@ -157,10 +157,12 @@ LinkEnd Reader::end(const toml::node& node, const Topology& t) const {
       *expect(node, toml::node_type::string, "link end", "a string").value<std::string>();
   const auto dot = text.rfind('.');
   const std::string link = dot == std::string::npos ? "" : text.substr(dot + 1);
-  const bool digits = link.size() > 4 && link.size() <= 8 && link.compare(0, 4, "link") == 0 &&
-                      link.find_first_not_of("0123456789", 4) == std::string::npos;
+  // One digit: "link01" is no link of a T800 and is not read as link1.
+  const bool digits = link.size() == 5 && link.compare(0, 4, "link") == 0 &&
+                      std::isdigit(static_cast<unsigned char>(link[4]));
   if (!digits || dot == 0)
-    fail(node, "malformed link end '" + text + "': expected NAME.linkN, e.g. \"P0.link1\"");
+    fail(node, "malformed link end '" + text +
+                   "': expected NAME.linkN with N one of 0-3, e.g. \"P0.link1\"");
   const std::string name = text.substr(0, dot);
   const int index = std::stoi(link.substr(4));
   const int p = t.find(name);

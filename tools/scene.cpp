@@ -361,11 +361,11 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
     const std::string type = workloads::to_string(spec.type);
     fail(node, "'" + key + "': expected " + article(type) + type + ", got " + type_name(node));
   };
-  auto check_range = [&](double x) {
+  auto check_range = [&](double x, const toml::node& node) {
     if ((spec.min && x < *spec.min) || (spec.max && x > *spec.max))
-      fail(value, key + " = " + number_text(x) + " is outside the valid range " +
-                      (spec.min ? number_text(*spec.min) : "-inf") + " to " +
-                      (spec.max ? number_text(*spec.max) : "inf"));
+      fail(node, key + " = " + number_text(node) + " is outside the valid range " +
+                     (spec.min ? number_text(*spec.min) : "-inf") + " to " +
+                     (spec.max ? number_text(*spec.max) : "inf"));
   };
   switch (spec.type) {
     case ParamType::flag:
@@ -374,14 +374,15 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
     case ParamType::integer: {
       if (!value.is_integer()) wrong_type(value);
       const std::int64_t n = *value.value<std::int64_t>();
-      check_range(static_cast<double>(n));
+      check_range(static_cast<double>(n), value);
       return n;
     }
     case ParamType::real: {
       if (!value.is_number()) wrong_type(value);  // an integer is a fine real
       const double x = number(value);
-      if (!std::isfinite(x)) fail(value, key + " is " + number_text(x) + ": give a finite number");
-      check_range(x);
+      if (!std::isfinite(x))
+        fail(value, key + " is " + number_text(value) + ": give a finite number");
+      check_range(x, value);
       return x;
     }
     case ParamType::text: {
@@ -424,8 +425,8 @@ workloads::ParamValue SceneReader::param(const workloads::ParamSpec& spec, const
                             type_name(element));
         list.push_back(number(element));
         if (!std::isfinite(list.back()))
-          fail(element, key + " contains " + number_text(list.back()) + ": give finite numbers");
-        check_range(list.back());
+          fail(element, key + " contains " + number_text(element) + ": give finite numbers");
+        check_range(list.back(), element);
       }
       return list;
     }

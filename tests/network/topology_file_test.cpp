@@ -188,7 +188,9 @@ TEST(TopologyFile, UnknownProcessorInLinkEnd) {
 }
 
 TEST(TopologyFile, MalformedLinkEnd) {
-  for (const char* end : {"P1link0", "P1.lnk0", ".link0", "P1.link", "P1.link-1", "P1.linkX"})
+  // One digit only: "link01" is not read as link1, nor "link12" as some link of a T800.
+  for (const char* end : {"P1link0", "P1.lnk0", ".link0", "P1.link", "P1.link-1", "P1.linkX",
+                          "P1.link01", "P1.link12"})
     EXPECT_TRUE(bad_file(with_link("P0.link1", end), 12, 6,
                          {"malformed link end '" + std::string(end) + "'", "expected NAME.linkN"}))
         << end;
