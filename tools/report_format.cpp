@@ -56,7 +56,10 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
   } else if (!r.blocked.empty()) {
     out += "\nDEADLOCK: the simulation ran out of events with processes still blocked:\n";
     for (const network::FaultRecord& f : r.faults)
-      if (f.fired) out += "  (after the fault " + f.describe() + ", not recovered)\n";
+      if (f.fired)  // as the faults section above says it
+        out += "  (after the fault " + f.describe() +
+               (f.recovered_how.empty() ? ", not recovered)\n"
+                                        : ", recovered: " + f.recovered_how + ")\n");
     for (const auto& b : r.blocked)
       out += fmt::format("  {} on {}: {}, waiting for {}\n", b.process, b.processor, b.status,
                          b.waits_for);

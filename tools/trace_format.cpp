@@ -7,10 +7,10 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "tools/input_file.hpp"
 #include "tools/sweep_csv.hpp"
+#include "workloads/run/result_value.hpp"
 
 namespace tools {
 
@@ -47,7 +47,7 @@ void processor_rows(const TraceTrack& track, double end_us, std::vector<TraceRow
 }
 
 std::string quoted(const std::string& s) {
-  return nlohmann::json(s).dump();
+  return workloads::json_string(s);
 }
 
 }  // namespace

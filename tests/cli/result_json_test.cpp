@@ -34,6 +34,23 @@ TEST(ResultJson, ScalarsNestingAndEscapesFollowTheGrammar) {
   EXPECT_EQ(out, "prefix " + v.to_json());
 }
 
+// Well-formed UTF-8 passes through; each byte of an ill-formed sequence (RFC 3629: a stray
+// continuation byte, a truncated sequence, an overlong form, a surrogate, past U+10FFFF) becomes
+// U+FFFD, so the text is valid JSON an independent parser reads back.
+TEST(ResultJson, AnyLabelGivesValidJson) {
+  const std::string good = "\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80";  // é € 😀
+  EXPECT_EQ(workloads::json_string(good), "\"" + good + "\"");
+  EXPECT_EQ(workloads::json_string(std::string("a\0b\x7f", 4)), "\"a\\u0000b\\u007f\"");
+  for (const std::string bad :
+       {"\x80", "\xc3", "\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80", "\xff", "\xe2\x82"}) {
+    const std::string text = workloads::json_string("p" + bad + "q");
+    std::string expected = "p";
+    for (std::size_t i = 0; i < bad.size(); ++i) expected += "\xef\xbf\xbd";  // U+FFFD
+    expected += "q";
+    ASSERT_NO_THROW(EXPECT_EQ(nlohmann::json::parse(text).get<std::string>(), expected)) << text;
+  }
+}
+
 TEST(ResultJson, EveryShippedSceneReportParsesAndKeepsItsNumbers) {
   const std::filesystem::path scenes = std::filesystem::path(T800SIM_SOURCE_DIR) / "configs/scenes";
   int checked = 0;

@@ -51,11 +51,54 @@ std::string ResultValue::first_non_finite(const std::string& path) const {
 }
 
 namespace {
+
+// The length of the well-formed UTF-8 sequence at s[i] (RFC 3629: no overlong forms, no
+// surrogates, nothing past U+10FFFF), or 0 when the byte there starts none.
+std::size_t utf8_sequence(const std::string& s, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char lead = byte(i);
+  if (lead < 0x80) return 1;
+  std::size_t n = 0;
+  unsigned char low = 0x80, high = 0xBF;  // the second byte's range
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    n = 2;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    n = 3;
+    if (lead == 0xE0) low = 0xA0;
+    if (lead == 0xED) high = 0x9F;
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    n = 4;
+    if (lead == 0xF0) low = 0x90;
+    if (lead == 0xF4) high = 0x8F;
+  } else {
+    return 0;
+  }
+  if (i + n > s.size() || byte(i + 1) < low || byte(i + 1) > high) return 0;
+  for (std::size_t k = 2; k < n; ++k)
+    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+  return n;
+}
+
+}  // namespace
+
 // Everything is appended to one string: a string made and copied per value and per level of nesting
 // was most of the cost of a large farm's report.
-void append_quoted(std::string& out, const std::string& s) {
+void append_json_string(std::string& out, const std::string& s) {
   out += '"';
-  for (char c : s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const char c = s[i];
+    const std::size_t n = utf8_sequence(s, i);
+    if (n == 0) {
+      out += "\\ufffd";  // a byte that is not UTF-8 (JSON text must be): the replacement character
+      ++i;
+      continue;
+    }
+    if (n > 1) {
+      out.append(s, i, n);
+      i += n;
+      continue;
+    }
+    ++i;
     switch (c) {
       case '"':
         out += "\\\"";
@@ -70,15 +113,20 @@ void append_quoted(std::string& out, const std::string& s) {
         out += "\\t";
         break;
       default:
-        if (static_cast<unsigned char>(c) < 0x20)
-          fmt::format_to(std::back_inserter(out), "\\u{:04x}", c);
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+          fmt::format_to(std::back_inserter(out), "\\u{:04x}", int(c));
         else
           out += c;
     }
   }
   out += '"';
 }
-}  // namespace
+
+std::string json_string(const std::string& s) {
+  std::string out;
+  append_json_string(out, s);
+  return out;
+}
 
 void ResultValue::append_json(std::string& out) const {
   if (const auto* x = std::get_if<double>(&v_)) {
@@ -91,7 +139,7 @@ void ResultValue::append_json(std::string& out) const {
   } else if (const auto* b = std::get_if<bool>(&v_)) {
     out += *b ? "true" : "false";
   } else if (const auto* s = std::get_if<std::string>(&v_)) {
-    append_quoted(out, *s);
+    append_json_string(out, *s);
   } else if (const auto* l = std::get_if<List>(&v_)) {
     out += '[';
     for (std::size_t k = 0; k < l->size(); ++k) {
@@ -104,7 +152,7 @@ void ResultValue::append_json(std::string& out) const {
     out += '{';
     for (std::size_t k = 0; k < r.size(); ++k) {
       if (k) out += ", ";
-      append_quoted(out, r[k].first);
+      append_json_string(out, r[k].first);
       out += ": ";
       r[k].second.append_json(out);
     }

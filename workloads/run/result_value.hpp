@@ -1,5 +1,5 @@
-// A small tree of results (numbers, text, lists, keyed records) that a workload hands back. The command line
-// renders it as text or JSON; workloads stay free of any output format.
+// A small tree of results (numbers, text, lists, keyed records) that a workload hands back. The
+// command line renders it as text or JSON; workloads stay free of any output format.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +9,12 @@
 #include <vector>
 
 namespace workloads {
+
+// `s` as a JSON string, quotes included: control characters escaped and each byte that is not part
+// of well-formed UTF-8 replaced by U+FFFD, so any label (a process name, a fault's description)
+// gives valid JSON. The one JSON string writer for reports and traces.
+std::string json_string(const std::string& s);
+void append_json_string(std::string& out, const std::string& s);
 
 class ResultValue {
  public:
@@ -30,8 +36,8 @@ class ResultValue {
   void push(ResultValue value);
   const ResultValue* get(const std::string& key) const;
   double number() const;
-  // Where the first NaN or infinity is ("c[0]", "per_worker[2].end_us", under `path`), or "" when every
-  // number is finite: JSON cannot hold them, and a result that has one is not a result.
+  // Where the first NaN or infinity is ("c[0]", "per_worker[2].end_us", under `path`), or "" when
+  // every number is finite: JSON cannot hold them, and a result that has one is not a result.
   std::string first_non_finite(const std::string& path = "") const;
 
   bool is_record() const { return std::holds_alternative<Record>(v_); }
