@@ -1,11 +1,10 @@
 #include "network/toml_util.hpp"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
 #include <fmt/format.h>
 
+#include "network/input_file.hpp"
 #include "network/toml_limits.hpp"
 
 namespace network {
@@ -42,26 +41,15 @@ std::string type_name(const toml::node& node) {
   return "nothing";
 }
 
-// Missing files and directories get a plain message; toml++ would read a directory as an empty
-// file.
+// A file that is not there, not a regular file or too long gets a plain message before any of it
+// is parsed; toml++ would read a directory or an unreadable file as an empty one.
 toml::table parse_toml_file(const std::string& path, const std::string& what) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::is_directory(path, ec))
-    throw ConfigError({path, 0, 0}, "this is a directory, not a " + what);
-  if (!fs::exists(path, ec)) throw ConfigError({path, 0, 0}, "no such " + what);
-  const auto size = fs::file_size(path, ec);
-  if (!ec && size > TomlLimits::kMaxBytes)  // not read at all (a device or a pipe has no size)
-    throw ConfigError({path, 0, 0}, "the " + what + " is " + std::to_string(size) +
-                                        " bytes; at most " + std::to_string(TomlLimits::kMaxBytes) +
-                                        " are read");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError({path, 0, 0}, "cannot open the " + what);
   std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > TomlLimits::kMaxBytes) break;  // the limit check below says so
+  try {
+    text = read_input_file(path, TomlLimits::kMaxBytes);
+  } catch (const InputFileError& e) {
+    if (e.missing) throw ConfigError({path, 0, 0}, "no such " + what);
+    throw ConfigError({path, 0, 0}, std::string(e.what()) + "; give a " + what + " (TOML text)");
   }
   return parse_toml_text(text, path);
 }

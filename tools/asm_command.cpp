@@ -1,11 +1,11 @@
 // `t800sim asm SOURCE -o FILE`: T800 assembler text (t800/asm/assembler.hpp) to a bootable file
 // that `t800sim boot` (or a real board's iserver) sends down the host link.
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include <fmt/format.h>
 
+#include "network/input_file.hpp"
 #include "t800/asm/assembler.hpp"
 #include "t800/asm/boot_file.hpp"
 #include "t800/processors/processor_model.hpp"
@@ -22,12 +22,15 @@ struct AsmArgs {
   std::string processor = "T800-20";
 };
 
+// Assembly sources are text a person writes; the bound keeps a mistaken path from being read whole.
+constexpr std::size_t kMaxSourceBytes = std::size_t(64) << 20;
+
 std::string read_source(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument(path + ": cannot read the source file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  try {
+    return network::read_input_file(path, kMaxSourceBytes);
+  } catch (const network::InputFileError& e) {
+    throw std::invalid_argument(path + ": " + e.what() + " (an assembly source file)");
+  }
 }
 
 // An error in the source is bad input ("file:line:column: ..."), like a scene's.

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "tools/commands.hpp"
-#include "tools/input_file.hpp"
+#include "network/input_file.hpp"
 #include "tools/sweep_result.hpp"
 #include "workloads/run/output_file.hpp"
 
@@ -45,7 +45,7 @@ std::vector<std::string> result_files(const std::vector<std::string>& inputs) {
 }
 
 PointResult read_point(const std::string& file) {
-  require_regular_input(file, file, "a JSON result written by sweep --point");
+  network::require_regular_input(file, file, "a JSON result written by sweep --point");
   std::ifstream in(file);
   std::stringstream text;
   text << in.rdbuf();

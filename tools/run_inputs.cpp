@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "network/input_file.hpp"
 #include "tools/robot_file.hpp"
 #include "workloads/registry.hpp"
 #include "workloads/run/output_file.hpp"
@@ -38,11 +39,15 @@ void check_files(const Scene& scene, const workloads::WorkloadInfo& info,
                  const workloads::Params& params) {
   for (const workloads::ParamSpec& p : info.params) {
     if (p.type != workloads::ParamType::input_file || params.text(p.name).empty()) continue;
+    const std::string& name = params.text(p.name);
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(params.text(p.name), ec))
+    if (!std::filesystem::exists(name, ec))
       throw network::ConfigError(origin_of(scene, {"workload." + p.name}),
-                                 "workload." + p.name + ": no such file " + params.text(p.name) +
+                                 "workload." + p.name + ": no such file " + name +
                                      " (names are relative to the scene file)");
+    if (const std::string problem = network::not_regular_file(name); !problem.empty())
+      throw network::ConfigError(origin_of(scene, {"workload." + p.name}),
+                                 "workload." + p.name + ": " + name + ": " + problem);
   }
 }
 

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "network/families.hpp"
+#include "network/input_file.hpp"
 #include "network/toml_limits.hpp"
 #include "network/toml_util.hpp"
 #include "network/topology_file.hpp"
@@ -348,8 +349,10 @@ network::Topology SceneReader::from_file(const toml::node& path) const {
   fs::path resolved(name);
   if (resolved.is_relative()) resolved = fs::path(file_).parent_path() / resolved;
   std::error_code ec;
-  if (name.empty() || !fs::is_regular_file(resolved, ec))
+  if (name.empty() || !fs::exists(resolved, ec))
     fail(path, "topology file '" + name + "' not found (looked for " + resolved.string() + ")");
+  if (const std::string problem = network::not_regular_file(resolved.string()); !problem.empty())
+    fail(path, "topology file '" + name + "': " + problem + "; give a topology file (TOML text)");
   return network::load_topology(resolved.string());
 }
 
@@ -504,12 +507,15 @@ void SceneReader::calibration(Scene& scene) const {
     const std::string name = text(*file, "calibration.file");
     const fs::path path = fs::path(file_).parent_path() / name;
     std::error_code ec;
-    if (name.empty() || !fs::is_regular_file(path, ec))
+    if (name.empty() || !fs::exists(path, ec))
       fail(*file,
            "calibration file '" + name + "' not found (looked for " + path.string() +
                "; calibration.file is relative to the scene file): copy the calibration file "
                "there, correct the path, or give code_efficiency and fitted in [calibration] "
                "instead");
+    if (const std::string problem = network::not_regular_file(path.string()); !problem.empty())
+      fail(*file,
+           "calibration file '" + name + "': " + problem + "; give a calibration file (TOML text)");
     const toml::table shared = network::parse_toml_file(path.string(), "calibration file");
     const toml::node* inner = shared.get("calibration");
     if (!inner || !inner->is_table())

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "tools/input_file.hpp"
+#include "network/input_file.hpp"
 #include "tools/sweep_csv.hpp"
 
 namespace tools {
@@ -271,7 +271,7 @@ std::string results_csv(const ResultsTable& table) {
 }
 
 ResultsTable read_results_csv(const std::string& path) {
-  require_regular_input(path, path, "a results table written by sweep -o or merge -o");
+  network::require_regular_input(path, path, "a results table written by sweep -o or merge -o");
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(path + ": cannot read it");
   std::string line;

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "tools/input_file.hpp"
+#include "network/input_file.hpp"
 #include "tools/sweep_csv.hpp"
 #include "workloads/run/result_value.hpp"
 
@@ -115,7 +115,7 @@ std::string trace_chrome_json(const std::vector<TraceRow>& rows) {
 }
 
 std::vector<TraceRow> read_trace_csv(const std::string& path) {
-  require_regular_input(path, path, "a CSV trace written by run --trace-csv");
+  network::require_regular_input(path, path, "a CSV trace written by run --trace-csv");
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(path + ": cannot read it");
   std::string line;

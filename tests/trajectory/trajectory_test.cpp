@@ -90,7 +90,9 @@ TEST(Trajectory, TorqueTableRk4EqualsTheRolloutBitForBit) {
   p.set("steps", std::int64_t{2});
   const auto report = run(p);
   expect_clean(report, 2);
-  const auto table = integration::TorqueTable::load(csv, integration::TorqueInterpolation::linear);
+  std::ifstream file(csv);
+  const auto table =
+      integration::TorqueTable::parse(file, csv, integration::TorqueInterpolation::linear);
   expect_same_state(report.workload,
                     rollout<float>(p, [&](double t, const JointVector&, const JointVector&) {
                       return table.at(t);

@@ -2,13 +2,12 @@
 // link onto a network of transputers that execute real machine code (IssNode), its host requests
 // served by a sandboxed iserver (HostServer). docs/iss.md.
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <sstream>
 
 #include <fmt/format.h>
 
+#include "network/input_file.hpp"
 #include "workloads/boot/boot_session.hpp"
 #include "workloads/boot/host_server.hpp"
 #include "workloads/boot/iss_node.hpp"
@@ -29,15 +28,14 @@ constexpr std::int64_t kMaxBootFileBytes = std::int64_t(1) << 32;
 constexpr std::int64_t kMaxSimulatedMemory = std::int64_t(16) << 30;
 
 Bytes read_boot_file(const std::string& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw SettingError({"workload.file"}, "workload.file: cannot read " + path);
-  if (std::int64_t(size) > kMaxBootFileBytes)
-    throw SettingError(
-        {"workload.file"},
-        fmt::format("workload.file: {} holds {} bytes, more than a T800 can address", path, size));
-  std::ifstream in(path, std::ios::binary);
-  Bytes bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text;
+  try {
+    text = network::read_input_file(path, std::size_t(kMaxBootFileBytes));
+  } catch (const network::InputFileError& e) {
+    throw SettingError({"workload.file"}, fmt::format("workload.file: {}: {}{}", path, e.what(),
+                                                      e.missing ? "" : " (a T800 addresses 4 GB)"));
+  }
+  const Bytes bytes(text.begin(), text.end());
   if (bytes.empty())
     throw SettingError({"workload.file"},
                        "workload.file: " + path +

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -80,12 +79,6 @@ TorqueTable TorqueTable::parse(std::istream& in, const std::string& name, Torque
   if (table.t_.empty())
     throw std::invalid_argument(name + ": no torque rows (after the header " + kHeader + ")");
   return table;
-}
-
-TorqueTable TorqueTable::load(const std::string& path, TorqueInterpolation how) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the torque table");
-  return parse(in, path, how);
 }
 
 dynamics::JointVector TorqueTable::at(double t) const {

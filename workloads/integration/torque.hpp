@@ -20,9 +20,9 @@ enum class TorqueInterpolation { linear, hold };
 // increasing. Blank lines and lines starting with '#' are skipped.
 class TorqueTable {
  public:
-  // Errors are std::invalid_argument naming `name:line`.
+  // Errors are std::invalid_argument naming `name:line`. Reading the file is the caller's: what may
+  // be read as input is the simulator's rule (network/input_file.hpp), not the numerics'.
   static TorqueTable parse(std::istream& in, const std::string& name, TorqueInterpolation how);
-  static TorqueTable load(const std::string& path, TorqueInterpolation how);
 
   dynamics::JointVector at(double t) const;
   std::size_t rows() const { return t_.size(); }

@@ -6,8 +6,10 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
+#include "network/input_file.hpp"
 #include "t800sim/kernel.hpp"
 #include "t800sim/process.hpp"
 #include "workloads/setting_error.hpp"
@@ -61,6 +63,10 @@ JointVector joint_vector(const Params& p, const std::string& name, bool broadcas
   return out;
 }
 
+// A torque table is a few numbers a row; a bound far past any real trajectory's keeps a mistaken
+// path (a log, an image) from being read into memory whole.
+constexpr std::size_t kMaxTorqueTableBytes = std::size_t(256) << 20;
+
 std::optional<integration::TorqueTable> torque_table(const Params& p) {
   if (p.text("torque") != "csv") return std::nullopt;
   if (p.text("torque_csv").empty())
@@ -68,7 +74,15 @@ std::optional<integration::TorqueTable> torque_table(const Params& p) {
                        "trajectory: workload.torque = \"csv\" needs workload.torque_csv");
   const auto how = p.text("interpolation") == "hold" ? integration::TorqueInterpolation::hold
                                                      : integration::TorqueInterpolation::linear;
-  return integration::TorqueTable::load(p.text("torque_csv"), how);
+  const std::string& path = p.text("torque_csv");
+  std::istringstream text;
+  try {
+    text.str(network::read_input_file(path, kMaxTorqueTableBytes));
+  } catch (const network::InputFileError& e) {
+    throw SettingError({"workload.torque_csv"},
+                       "workload.torque_csv: " + path + ": " + e.what() + " (a torque table, CSV)");
+  }
+  return integration::TorqueTable::parse(text, path, how);
 }
 
 PipelineSettings pipeline_settings(const Params& p) {
