@@ -194,7 +194,7 @@ Connection Reader::link(const toml::table& table, const Topology& t) const {
       fail(*speed, "'speed_mbps': expected a number, got " + type_name(*speed));
     const double mbps = number(*speed);
     if (!t800::is_valid_link_speed(mbps))
-      fail(*speed, "link speed " + number_text(mbps) +
+      fail(*speed, "link speed " + number_text(*speed) +
                        " Mbit/s is not supported: a T800 link runs at 5, 10 or 20 Mbit/s");
     c.speed_mbps = mbps;
   }

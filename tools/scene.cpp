@@ -227,7 +227,7 @@ t800::LinkConfig SceneReader::link_config(const toml::table* network,
       fail(*speed, "'network.link_speed_mbps': expected a number, got " + type_name(*speed));
     link.speed_mbps = number(*speed);
     if (!t800::is_valid_link_speed(link.speed_mbps))
-      fail(*speed, "link speed " + number_text(link.speed_mbps) +
+      fail(*speed, "link speed " + number_text(*speed) +
                        " Mbit/s is not supported: a T800 link runs at 5, 10 or 20 Mbit/s");
   }
   if (const toml::node* protocol = net.get("link_protocol")) {
