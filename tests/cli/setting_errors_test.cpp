@@ -77,6 +77,20 @@ TEST(SettingErrors, NonFiniteNumbersAreCaughtLikeNan) {
   }
 }
 
+// Values at the edges of their type are quoted as given: an integer exactly (it was once printed
+// through a double, 2^63-1 as 9223372036854775808.), a float as the shortest text that reads back.
+TEST(SettingErrors, ValuesAtTheEdgesAreQuotedAsGiven) {
+  const std::string scene = source("configs/scenes/pingpong.toml");
+  EXPECT_TRUE(at(error_of(scene, {"workload.bytes=9223372036854775807"}),
+                 "--set workload.bytes=9223372036854775807", 0, 0,
+                 "workload.bytes = 9223372036854775807 is outside the valid range"));
+  EXPECT_TRUE(at(error_of(scene, {"network.link_speed_mbps=9223372036854775807"}),
+                 "--set network.link_speed_mbps=9223372036854775807", 0, 0,
+                 "link speed 9223372036854775807 Mbit/s"));
+  EXPECT_TRUE(at(error_of(scene, {"network.link_speed_mbps=5e-324"}),
+                 "--set network.link_speed_mbps=5e-324", 0, 0, "link speed 5e-324 Mbit/s"));
+}
+
 TEST(SettingErrors, TooFewLevel2ProcessorsNameTheLine) {
   const std::string path =
       scene_file("[network]\ntopology = \"" + source("configs/topologies/elimination-m2.toml") +

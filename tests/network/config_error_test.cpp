@@ -29,3 +29,15 @@ TEST(NetworkConfigError, IsARuntimeError) {
 }
 
 }  // namespace
+
+namespace {
+
+// A value quoted into a message may hold anything a TOML string can: the message stays one line
+// a terminal shows as written, and a NUL does not cut it short.
+TEST(NetworkConfigError, ControlCharactersAreEscapedNotPrinted) {
+  const std::string value = std::string("a\nb\tc") + '\0' + "d\x1b" + "e\x7f";
+  const ConfigError e({"dir\nname.toml", 3, 1}, "bad '" + value + "'");
+  EXPECT_EQ(std::string(e.what()), "dir\\nname.toml:3:1: error: bad 'a\\nb\\tc\\x00d\\x1be\\x7f'");
+}
+
+}  // namespace
