@@ -60,6 +60,13 @@ Machine::Machine(const Topology& topology, const MachineOptions& options)
         code);
   }
   elaborate_links();
+  if (options_.keep_intervals) {
+    // The first progress report forecasts the trace (trace_forecast()).
+    options_.progress = [this, report = options_.progress](std::int64_t done, std::int64_t total) {
+      if (report) report(done, total);
+      forecast_trace(done, total);
+    };
+  }
 }
 
 Machine::~Machine() = default;
@@ -353,7 +360,7 @@ std::vector<BlockedProcess> Machine::run() {
   pending_.clear();
   elaboration_s_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
-  if (options_.max_sim_s > 0 || options_.max_wall_s > 0)
+  if (limited())
     run_with_limits();
   else
     sc_core::sc_start();
@@ -386,7 +393,10 @@ void Machine::run_with_limits() {
   };
   const sc_time sim_limit = options_.max_sim_s > 0 ? sc_time(options_.max_sim_s, sc_core::SC_SEC)
                                                    : sc_core::sc_max_time();
-  sc_time slice = options_.max_wall_s > 0 ? sc_time(1, sc_core::SC_US) : sim_limit;
+  // Slices that adapt to the wall clock where something is read between them.
+  const bool watch =
+      options_.max_wall_s > 0 || (options_.keep_intervals && options_.max_trace_intervals > 0);
+  sc_time slice = watch ? sc_time(1, sc_core::SC_US) : sim_limit;
   // Before the first sc_start nothing is pending yet: the processes start in its initialisation.
   for (bool first = true; first || sc_core::sc_pending_activity(); first = false) {
     const sc_time now = t800::sim_now();
@@ -399,7 +409,12 @@ void Machine::run_with_limits() {
     const double before = wall_s();
     sc_core::sc_start(std::min(std::max(slice, next), sim_limit - now),
                       sc_core::SC_EXIT_ON_STARVATION);
+    if (limit_ != Limit::none) return;  // the trace's forecast passed its limit
     if (t800::sim_now() == now && sc_core::sc_delta_count() == deltas) return;  // nothing moved
+    if (trace_over_limit()) {
+      limit_ = Limit::trace_size;
+      return;
+    }
     if (options_.max_wall_s > 0 && wall_s() >= options_.max_wall_s) {
       if (sc_core::sc_pending_activity()) limit_ = Limit::wall_time;
       return;
@@ -407,6 +422,51 @@ void Machine::run_with_limits() {
     const double took = wall_s() - before;
     if (took < 0.02 && slice < sc_core::sc_max_time() / 2) slice = slice * 2;
     if (took > 0.2 && slice > sc_time(2, sc_core::SC_PS)) slice = slice / 2;
+  }
+}
+
+const char* to_string(Limit limit) {
+  switch (limit) {
+    case Limit::sim_time:
+      return "max_sim_time";
+    case Limit::wall_time:
+      return "max_wall_time";
+    case Limit::trace_size:
+      return "max_trace_intervals";
+    case Limit::none:
+      break;
+  }
+  return "";
+}
+
+bool Machine::limited() const {
+  return options_.max_sim_s > 0 || options_.max_wall_s > 0 ||
+         (options_.keep_intervals && options_.max_trace_intervals > 0);
+}
+
+std::int64_t Machine::kept_intervals() const {
+  std::size_t n = 0;
+  for (const auto& t : transputers_) n += t->activity().intervals().size();
+  for (const auto& l : link_modules_)
+    n += l->activity(0).intervals().size() + l->activity(1).intervals().size();
+  return std::int64_t(n);
+}
+
+bool Machine::trace_over_limit() const {
+  return options_.keep_intervals && options_.max_trace_intervals > 0 &&
+         kept_intervals() > options_.max_trace_intervals;
+}
+
+// At the first progress report, the intervals kept so far scaled to the whole run; a forecast past
+// the limit stops the run there (at the end of this delta cycle), before the trace has grown.
+void Machine::forecast_trace(std::int64_t done, std::int64_t total) {
+  if (forecast_.intervals >= 0 || done < 1 || total < done) return;
+  const double scaled = double(kept_intervals()) * double(total) / double(done);
+  forecast_ = {std::int64_t(std::min(scaled, 9e18)), done, total};
+  if (options_.trace_forecast) options_.trace_forecast(forecast_);
+  if (options_.max_trace_intervals > 0 && forecast_.intervals > options_.max_trace_intervals) {
+    limit_ = Limit::trace_size;
+    sc_core::sc_pause();
   }
 }
 

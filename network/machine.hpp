@@ -28,6 +28,12 @@ namespace network {
 
 class StoreAndForward;
 
+// A trace's expected size: the intervals kept after `done` of `total` units of a workload's
+// progress, scaled to all of them (a trajectory's steps record alike).
+struct TraceForecast {
+  std::int64_t intervals = 0, done = 0, total = 0;
+};
+
 struct MachineOptions {
   t800::LinkConfig link;  // default for connections without their own speed
   t800::Precision precision = t800::Precision::real64;
@@ -48,9 +54,18 @@ struct MachineOptions {
   // Called by workloads that know how far they are (a trajectory: steps done of all), for a
   // progress display; may be empty.
   std::function<void(std::int64_t done, std::int64_t total)> progress;
+  // With keep_intervals: the intervals a trace may hold (0 = no limit). A run whose trace would
+  // pass it is stopped as soon as that is known (Machine::trace_forecast), else when it does.
+  std::int64_t max_trace_intervals = 0;
+  // With keep_intervals: told the trace's expected size once a workload's first progress report
+  // lets it be extrapolated; may be empty.
+  std::function<void(const TraceForecast&)> trace_forecast;
 };
 
-enum class Limit { none, sim_time, wall_time };
+enum class Limit { none, sim_time, wall_time, trace_size };
+// The report's name of a limit: "max_sim_time", "max_wall_time", "max_trace_intervals" ("" for
+// none).
+const char* to_string(Limit limit);
 
 // A process that had not ended when the simulation ran out of events.
 struct BlockedProcess {
@@ -83,8 +98,13 @@ class Machine {
   // Whether run() ends the processes it leaves (MachineOptions::tear_down): if not, the Machine
   // must outlive the program's use of SystemC.
   bool tears_down() const;
-  // Which limit stopped the run (MachineOptions::max_sim_s, max_wall_s), if one did.
+  // Which limit stopped the run (MachineOptions::max_sim_s, max_wall_s, max_trace_intervals), if
+  // one did.
   Limit limit_reached() const { return limit_; }
+  // The trace intervals kept so far (every processor's and link direction's).
+  std::int64_t kept_intervals() const;
+  // The trace's forecast, once a workload's progress has given one (intervals < 0 before).
+  const TraceForecast& trace_forecast() const { return forecast_; }
   // After a deadlock, the cycle of waits among the blocked processes, if they close one
   // (network/wait_cycle.hpp).
   const std::vector<std::string>& wait_cycle() const { return wait_cycle_; }
@@ -170,6 +190,10 @@ class Machine {
   void pooled_thread(PooledThread& t);
   void end_threads();
   void run_with_limits();
+  bool limited() const;
+  bool trace_over_limit() const;
+  void forecast_trace(std::int64_t done, std::int64_t total);
+  TraceForecast forecast_{-1, 0, 0};
   std::vector<sc_core::sc_process_handle> handles_;  // every thread spawned for a process
   std::vector<std::unique_ptr<PooledThread>> threads_;
   std::vector<PooledThread*> idle_threads_;

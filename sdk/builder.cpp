@@ -113,7 +113,7 @@ Results& Results::table(const std::string& param, std::vector<std::string> colum
       throw std::logic_error("table for workload." + param + ": a row of " +
                              std::to_string(row.size()) + " numbers under " +
                              std::to_string(columns.size()) + " columns");
-  tables_.push_back({param, std::move(columns), std::move(rows)});
+  tables_.push_back({param, std::move(columns), std::move(rows), nullptr});
   return *this;
 }
 

@@ -123,7 +123,8 @@ int boot_file(const BootArgs& args) {
   if (!args.json.empty()) workloads::check_output_path(args.json, "--json");
   check_trace_files(args.traces);
   const Scene scene = boot_scene(args);
-  workloads::RunInputs inputs = inputs_from(scene, args.traces.any());
+  workloads::RunInputs inputs = inputs_from(scene);
+  keep_trace(args.traces, inputs.options);
   inputs.options.max_sim_s = args.max_simulated_s;
   inputs.options.tear_down = false;  // the command exits after this run (network::Machine)
   const workloads::RunReport report = workloads::run(inputs);
@@ -138,8 +139,11 @@ int boot_file(const BootArgs& args) {
     return kExitFailure;
   }
   if (report.limit != network::Limit::none) {
-    std::cerr << fmt::format("error: stopped by --max-simulated-s {} at simulated time {:.6f} s\n",
-                             args.max_simulated_s, report.simulated_us * 1e-6);
+    const std::string limit = report.limit == network::Limit::trace_size
+                                  ? trace_limit_text(args.traces, report)
+                                  : fmt::format("--max-simulated-s {}", args.max_simulated_s);
+    std::cerr << fmt::format("error: stopped by {} at simulated time {:.6f} s\n", limit,
+                             report.simulated_us * 1e-6);
     return kExitLimit;
   }
   if (field(report.workload, "instruction_limit")) {

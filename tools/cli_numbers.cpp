@@ -23,18 +23,32 @@ CLI::Validator seconds_limit() {
       "SECONDS");
 }
 
-CLI::Validator index_from_zero() {
+namespace {
+
+// Integers from 0 to `largest`, written in full; `what` says what the value is for ("an index").
+CLI::Validator integer_from_zero(long long largest, const std::string& what,
+                                 const std::string& hint, const std::string& name) {
   return CLI::Validator(
-      [](std::string& text) -> std::string {
+      [=](std::string& text) -> std::string {
         long long value = -1;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
         if (error != std::errc() || end != text.data() + text.size() || value < 0 ||
-            value > INT_MAX)
-          return "'" + text + "' is not an index: give an integer from 0 to " +
-                 std::to_string(INT_MAX);
+            value > largest)
+          return "'" + text + "' is not " + what + ": give an integer from 0 to " +
+                 std::to_string(largest) + hint;
         return "";
       },
-      "INDEX");
+      name);
+}
+
+}  // namespace
+
+CLI::Validator index_from_zero() {
+  return integer_from_zero(INT_MAX, "an index", "", "INDEX");
+}
+
+CLI::Validator count_limit() {
+  return integer_from_zero(LLONG_MAX, "a count", " (0 for no limit)", "COUNT");
 }
 
 }  // namespace tools

@@ -14,4 +14,7 @@ CLI::Validator seconds_limit();
 // An integer from 0 up to the largest int, such as a point's index.
 CLI::Validator index_from_zero();
 
+// A count that limits something, an integer of 0 (no limit) or more.
+CLI::Validator count_limit();
+
 }  // namespace tools

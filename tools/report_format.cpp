@@ -5,6 +5,21 @@
 
 namespace tools {
 
+namespace {
+
+const char* limit_name(network::Limit limit) {
+  switch (limit) {
+    case network::Limit::sim_time:
+      return "simulated-time";
+    case network::Limit::trace_size:
+      return "trace-size";
+    default:
+      return "wall-time";
+  }
+}
+
+}  // namespace
+
 std::string format_text(const workloads::RunReport& r, const std::string& note) {
   std::string out = fmt::format("scene {}\n", r.name);
   out += fmt::format("simulated time  {:.3f} us\n", r.simulated_us);
@@ -52,7 +67,7 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
   }
   if (r.limit != network::Limit::none) {
     out += fmt::format("\nSTOPPED by the {} limit before the run ended: no workload results\n",
-                       r.limit == network::Limit::sim_time ? "simulated-time" : "wall-time");
+                       limit_name(r.limit));
   } else if (!r.blocked.empty()) {
     out += "\nDEADLOCK: the simulation ran out of events with processes still blocked:\n";
     for (const network::FaultRecord& f : r.faults)

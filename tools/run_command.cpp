@@ -65,16 +65,22 @@ struct RunArgs {
 };
 
 std::string limit_text(const RunArgs& args, const workloads::RunReport& report) {
-  return report.limit == network::Limit::sim_time
-             ? fmt::format("--max-sim-time {} s", args.max_sim_s)
-             : fmt::format("--max-wall-time {} s", args.max_wall_s);
+  switch (report.limit) {
+    case network::Limit::sim_time:
+      return fmt::format("--max-sim-time {} s", args.max_sim_s);
+    case network::Limit::trace_size:
+      return trace_limit_text(args.traces, report);
+    default:
+      return fmt::format("--max-wall-time {} s", args.max_wall_s);
+  }
 }
 
 int run_scene(const RunArgs& args) {
   Scene scene = load_scene(args.scene, args.overrides);
   for (const std::string& f : args.faults)
     scene.faults.push_back(parse_fault_flag(f, scene.topology));
-  workloads::RunInputs inputs = inputs_from(scene, args.traces.any());
+  workloads::RunInputs inputs = inputs_from(scene);
+  keep_trace(args.traces, inputs.options);
   check_trace_files(args.traces);
   inputs.options.max_sim_s = args.max_sim_s;
   inputs.options.max_wall_s = args.max_wall_s;

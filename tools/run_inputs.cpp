@@ -79,13 +79,12 @@ void at_scene_keys(const Scene& scene, const std::function<void()>& code) {
   }
 }
 
-workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals) {
+workloads::RunInputs inputs_from(const Scene& scene) {
   workloads::RunInputs in;
   in.name = scene.name;
   in.topology = scene.topology;
   in.options.link = scene.link;
   in.options.code_efficiency = scene.code_efficiency;
-  in.options.keep_intervals = keep_intervals;
   in.options.fidelity = scene.fidelity;
   in.options.checked = scene.run_time_checks;
   in.faults = scene.faults;

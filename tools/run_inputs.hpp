@@ -10,12 +10,12 @@
 
 namespace tools {
 
-// keep_intervals: record per-interval state (only when a trace is written). Loads the files the
+// No trace is kept (tools/trace_files.hpp: keep_trace asks for one). Loads the files the
 // workload names (the robot), builds the workload once without a network so that settings the
 // network rules out are reported at the scene line or flag that gave them, and checks that
 // workload.output_csv could be written. Throws network::ConfigError (or std::invalid_argument for
 // an error inside a named CSV file).
-workloads::RunInputs inputs_from(const Scene& scene, bool keep_intervals = false);
+workloads::RunInputs inputs_from(const Scene& scene);
 
 // Runs `code`; a workloads::SettingError it throws becomes a network::ConfigError at the scene line
 // or flag that set the first of its keys.

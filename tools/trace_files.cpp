@@ -5,7 +5,12 @@
 #include <filesystem>
 #include <memory>
 
+#include <fmt/format.h>
+
+#include <iostream>
+
 #include "tools/child_run.hpp"
+#include "tools/cli_numbers.hpp"
 #include "tools/trace_format.hpp"
 #include "workloads/run/output_file.hpp"
 
@@ -49,6 +54,34 @@ void add_trace_options(CLI::App& cmd, TraceFiles& files) {
       "direction, slices named by subtask or message");
   cmd.add_option("--trace-csv", files.csv,
                  "write a CSV trace: kind,name,state,start_us,end_us,label, one row per interval");
+  cmd.add_option("--trace-limit", files.limit,
+                 "the intervals (rows) a trace may hold; a run whose trace would pass it is "
+                 "stopped as soon as that is known. 0 = no limit")
+      ->check(count_limit())
+      ->capture_default_str();
+}
+
+void keep_trace(const TraceFiles& files, network::MachineOptions& options) {
+  options.keep_intervals = files.any();
+  if (!files.any()) return;
+  options.max_trace_intervals = files.limit;
+  options.trace_forecast = [limit = files.limit](const network::TraceForecast& f) {
+    std::cerr << fmt::format(
+                     "trace: about {} intervals expected (extrapolated from {} of {} steps)",
+                     f.intervals, f.done, f.total)
+              << (limit > 0 ? fmt::format("; --trace-limit {}", limit) : std::string{}) << "\n";
+  };
+}
+
+std::string trace_limit_text(const TraceFiles& files, const workloads::RunReport& report) {
+  const network::TraceForecast& f = report.trace_forecast;
+  const std::string forecast =
+      f.intervals > files.limit
+          ? fmt::format("the trace would hold about {}, extrapolated from {} of {} steps; ",
+                        f.intervals, f.done, f.total)
+          : std::string{};
+  return fmt::format("--trace-limit {} intervals ({}raise it, 0 for none, or trace fewer steps)",
+                     files.limit, forecast);
 }
 
 void check_trace_files(const TraceFiles& files) {

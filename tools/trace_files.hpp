@@ -3,20 +3,30 @@
 // (network::MachineOptions::keep_intervals).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "network/limits.hpp"
 #include "workloads/run/run.hpp"
 
 namespace tools {
 
 struct TraceFiles {
   std::string vcd, json, csv;
+  std::int64_t limit = network::kMaxTraceIntervals;  // --trace-limit (0: none)
   bool any() const { return !vcd.empty() || !json.empty() || !csv.empty(); }
 };
 
 void add_trace_options(CLI::App& cmd, TraceFiles& files);
+
+// With a trace asked for: the run keeps its intervals, within --trace-limit, and its forecast size
+// is announced on stderr as soon as the workload's progress gives it.
+void keep_trace(const TraceFiles& files, network::MachineOptions& options);
+
+// Why a run was stopped by --trace-limit, for its error message.
+std::string trace_limit_text(const TraceFiles& files, const workloads::RunReport& report);
 
 // Throws std::invalid_argument naming the flag when a file cannot be written (checked before the
 // run, so a typo in a path does not cost a simulation).

@@ -22,7 +22,7 @@ std::string read(const std::string& path) {
 
 workloads::RunReport report_with(const std::vector<std::vector<double>>& rows) {
   workloads::RunReport report;
-  report.tables.push_back({"output_csv", {"t", "x"}, rows});
+  report.tables.push_back({"output_csv", {"t", "x"}, rows, nullptr});
   return report;
 }
 

@@ -224,6 +224,7 @@ RunReport simulate(const RunInputs& in, Realised& realised) {
   }
   report.wait_cycle = machine.wait_cycle();
   report.limit = machine.limit_reached();
+  report.trace_forecast = machine.trace_forecast();
   report.simulated_us = machine.simulated_us();
   report.events = machine.events();
   report.elaboration_s = machine.elaboration_s();
@@ -320,8 +321,7 @@ ResultValue RunReport::to_value() const {
     for (const network::FaultRecord& f : faults) list.push(fault_value(f));
     v.set("faults", std::move(list));
   }
-  if (limit != network::Limit::none)
-    v.set("stopped_by", limit == network::Limit::sim_time ? "max_sim_time" : "max_wall_time");
+  if (limit != network::Limit::none) v.set("stopped_by", network::to_string(limit));
   if (!blocked.empty()) {
     ResultValue b = ResultValue::list();
     for (const auto& p : blocked) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -22,6 +23,7 @@
 #include "workloads/pipeline/pipeline_program.hpp"
 #include "workloads/registry.hpp"
 #include "workloads/run/operation_mix.hpp"
+#include "workloads/run/table_file.hpp"
 #include "workloads/trajectory/step_reuse.hpp"
 
 namespace workloads {
@@ -145,11 +147,36 @@ double us_since(const Process& p, Process::Instant from) {
   return Process::us_between(from, p.instant());
 }
 
-struct StepRecord {
-  double t = 0;
-  JointVector q, qd, tau;
-  StepTimes times;  // of the step that starts here (zero on the last row)
+// What results() reports of the steps, gathered as they go: a run's memory does not grow with its
+// steps (10^7 may be asked for). The sums are taken in step order, so the means are those of the
+// whole list of steps.
+struct StepSummary {
+  std::int64_t steps = 0;
+  StepTimes sum;
+  double largest_us = 0;
+
+  void add(const StepTimes& s) {
+    ++steps;
+    sum.step_us += s.step_us;
+    sum.dynamics_us += s.dynamics_us;
+    sum.solve_us += s.solve_us;
+    sum.integration_us += s.integration_us;
+    sum.communication_us += s.communication_us;
+    largest_us = std::max(largest_us, s.step_us);
+  }
 };
+
+// workload.output_csv's columns: t, q, q̇, τ, and the simulated time and split of the step that
+// starts at that row (zero on the last row, the final state).
+std::vector<std::string> trajectory_columns() {
+  std::vector<std::string> columns{"t"};
+  for (const char* name : {"q", "qd", "tau"})
+    for (int i = 1; i <= dynamics::kJoints; ++i) columns.push_back(name + std::to_string(i));
+  for (const char* name :
+       {"step_us", "dynamics_us", "solve_us", "integration_us", "communication_us"})
+    columns.emplace_back(name);
+  return columns;
+}
 
 struct LimitViolation {
   int joint = 0;  // 1-based
@@ -248,25 +275,42 @@ class Trajectory : public Workload {
   }
 
   void run(Process& p) {
+    // Rows go to the file as the steps go (tools/ commits it once the run has ended well).
+    if (!s_.output_csv.empty())
+      csv_ = std::make_shared<TableFile>(s_.output_csv, "output_csv", trajectory_columns());
     integration::State<S> x{s_.q0.cast<S>(), s_.qd0.cast<S>()};
     check_limits(wide(x.q), 0);  // a start outside the limits is reported as step 0
     try {
       for (int n = 1; n <= s_.steps; ++n) {
         const double t = (n - 1) * s_.dt;
-        StepRecord row{t, wide(x.q), wide(x.qd), torque(t, wide(x.q), wide(x.qd)), {}};
-        x = advance(p, t, x, row.times);
-        records_.push_back(row);
+        const integration::State<S> start = x;
+        StepTimes times;
+        x = advance(p, t, x, times);
+        totals_.add(times);
+        write_row(t, start, times);
         if (progress_) progress_(n, s_.steps);
         if (!check_limits(wide(x.q), n) && s_.stop_at_limits) break;
       }
     } catch (const SolveFailed& e) {
       failure_ = e.what();
     }
-    const double t = double(records_.size()) * s_.dt;
-    records_.push_back({t, wide(x.q), wide(x.qd), torque(t, wide(x.q), wide(x.qd)), {}});
+    final_ = x;
+    write_row(double(totals_.steps) * s_.dt, x, StepTimes{});
     StepReuse::boundary(p);  // the end is a step boundary too
     farm_.finish(p);
     pipeline_.finish(p);
+  }
+
+  // One row of workload.output_csv: the state at t, τ there, the step that starts there.
+  void write_row(double t, const integration::State<S>& x, const StepTimes& s) {
+    if (!csv_) return;
+    const JointVector q = wide(x.q), qd = wide(x.qd), tau = torque(t, q, qd);
+    std::vector<double> row{t};
+    for (const JointVector* v : {&q, &qd, &tau})
+      for (int i = 0; i < dynamics::kJoints; ++i) row.push_back((*v)(i));
+    row.insert(row.end(),
+               {s.step_us, s.dynamics_us, s.solve_us, s.integration_us, s.communication_us});
+    csv_->add(row);
   }
 
   static JointVector wide(const Vec& v) { return v.template cast<double>(); }
@@ -434,7 +478,7 @@ class Trajectory : public Workload {
     return inside;
   }
 
-  ResultValue split(const std::vector<StepRecord>& steps) const;
+  ResultValue split() const;
 
   const dynamics::RobotModel& model_;
   TrajectorySettings s_;
@@ -447,7 +491,9 @@ class Trajectory : public Workload {
   std::optional<StepReuse> reuse_;          // from the machine's options, at build()
   std::unique_ptr<t800sim::Builder> host_;  // the initial state's channel, host -> master
   std::vector<int> simulated_signature_;    // the pipeline's pivots in the step being simulated
-  std::vector<StepRecord> records_;         // one per step, and the final state
+  StepSummary totals_;                      // of the steps run
+  integration::State<S> final_;             // the state after the last step run
+  std::shared_ptr<TableFile> csv_;          // workload.output_csv, when asked for
   std::vector<LimitViolation> violations_;
   std::array<bool, dynamics::kJoints> outside_{};
   int steps_outside_ = 0;
@@ -461,34 +507,21 @@ ResultValue joint_values(const JointVector& v) {
   return out;
 }
 
-// The mean of each part of the step time, and the largest step.
+// The mean of each part of the step time.
 template <class S>
-ResultValue Trajectory<S>::split(const std::vector<StepRecord>& steps) const {
-  StepTimes sum;
-  for (const StepRecord& r : steps) {
-    sum.dynamics_us += r.times.dynamics_us;
-    sum.solve_us += r.times.solve_us;
-    sum.integration_us += r.times.integration_us;
-    sum.communication_us += r.times.communication_us;
-  }
-  const double n = std::max<double>(1, double(steps.size()));
+ResultValue Trajectory<S>::split() const {
+  const double n = std::max<double>(1, double(totals_.steps));
   ResultValue out;
-  out.set("dynamics_us", sum.dynamics_us / n);
-  out.set("solve_us", sum.solve_us / n);
-  out.set("integration_us", sum.integration_us / n);
-  out.set("communication_us", sum.communication_us / n);
+  out.set("dynamics_us", totals_.sum.dynamics_us / n);
+  out.set("solve_us", totals_.sum.solve_us / n);
+  out.set("integration_us", totals_.sum.integration_us / n);
+  out.set("communication_us", totals_.sum.communication_us / n);
   return out;
 }
 
 template <class S>
 ResultValue Trajectory<S>::results(const network::Machine&) const {
-  const std::vector<StepRecord> steps(records_.begin(), records_.end() - 1);
-  double total = 0, largest = 0;
-  for (const StepRecord& r : steps) {
-    total += r.times.step_us;
-    largest = std::max(largest, r.times.step_us);
-  }
-  const double mean = steps.empty() ? 0 : total / double(steps.size());
+  const double mean = totals_.steps ? totals_.sum.step_us / double(totals_.steps) : 0;
   ResultValue r;
   r.set("integrator", integration::to_string(s_.method));
   r.set("evaluations_per_step", integration::evaluations_per_step(s_.method));
@@ -498,12 +531,12 @@ ResultValue Trajectory<S>::results(const network::Machine&) const {
   r.set("pivoting", elimination::to_string(s_.pipeline.rule.pivoting));
   r.set("m", pipeline_.settings().m);
   r.set("workers", std::int64_t(farm_.workers().size()));
-  r.set("steps", std::int64_t(steps.size()));
+  r.set("steps", totals_.steps);
   r.set("steps_requested", s_.steps);
   r.set("dt", s_.dt);
   r.set("mean_step_us", mean);
-  r.set("max_step_us", largest);
-  r.set("split_mean_us", split(steps));
+  r.set("max_step_us", totals_.largest_us);
+  r.set("split_mean_us", split());
   r.set("real_time_factor", mean / (s_.dt * 1e6));
   ResultValue exits = ResultValue::list();
   for (const LimitViolation& v : violations_) {
@@ -521,32 +554,17 @@ ResultValue Trajectory<S>::results(const network::Machine&) const {
     r.set("numerics",
           "computed: fidelity.skip_numerics is ignored, a trajectory integrates its numbers and "
           "its pivots can change the schedule");
-  r.set("final_q", joint_values(records_.back().q));
-  r.set("final_qd", joint_values(records_.back().qd));
+  r.set("final_q", joint_values(wide(final_.q)));
+  r.set("final_qd", joint_values(wide(final_.qd)));
   if (!s_.output_csv.empty()) r.set("output_csv", s_.output_csv);  // written by tools/ (tables())
   return r;
 }
 
-// t, q, q̇, τ and the step's simulated time and split; the last row is the final state.
+// workload.output_csv, written row by row during the run (write_row).
 template <class S>
 std::vector<OutputTable> Trajectory<S>::tables() const {
-  if (s_.output_csv.empty()) return {};
-  OutputTable table{"output_csv", {"t"}, {}};
-  for (const char* name : {"q", "qd", "tau"})
-    for (int i = 1; i <= dynamics::kJoints; ++i) table.columns.push_back(name + std::to_string(i));
-  for (const char* name :
-       {"step_us", "dynamics_us", "solve_us", "integration_us", "communication_us"})
-    table.columns.emplace_back(name);
-  for (const StepRecord& r : records_) {
-    std::vector<double> row{r.t};
-    for (const JointVector* v : {&r.q, &r.qd, &r.tau})
-      for (int i = 0; i < dynamics::kJoints; ++i) row.push_back((*v)(i));
-    const StepTimes& s = r.times;
-    row.insert(row.end(),
-               {s.step_us, s.dynamics_us, s.solve_us, s.integration_us, s.communication_us});
-    table.rows.push_back(std::move(row));
-  }
-  return {table};
+  if (!csv_) return {};
+  return {OutputTable{"output_csv", {}, {}, csv_}};
 }
 
 }  // namespace
