@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "network/limits.hpp"
+#include "network/stop_request.hpp"
 #include "network/transport/direct_link.hpp"
 #include "network/transport/link_io.hpp"
 #include "network/transport/rendezvous.hpp"
@@ -360,6 +361,7 @@ std::vector<BlockedProcess> Machine::run() {
   pending_.clear();
   elaboration_s_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - created_).count();
+  heartbeats_.started = std::chrono::steady_clock::now();
   if (limited())
     run_with_limits();
   else
@@ -369,6 +371,10 @@ std::vector<BlockedProcess> Machine::run() {
   for (auto& t : transputers_) t->activity().close(t800::sim_now());
 
   std::vector<BlockedProcess> blocked;
+  if (limit_ != Limit::none)
+    for (const Process* p : processes_in_start_order())
+      if (!p->ended() && !p->daemon())
+        running_at_stop_.push_back({p->name(), node_name(p->node()), p->status(), ""});
   if (limit_ == Limit::none) {
     const WaitGraph waits(*this);
     for (const Process* p : waits.in_start_order())
@@ -394,8 +400,8 @@ void Machine::run_with_limits() {
   const sc_time sim_limit = options_.max_sim_s > 0 ? sc_time(options_.max_sim_s, sc_core::SC_SEC)
                                                    : sc_core::sc_max_time();
   // Slices that adapt to the wall clock where something is read between them.
-  const bool watch =
-      options_.max_wall_s > 0 || (options_.keep_intervals && options_.max_trace_intervals > 0);
+  const bool watch = options_.max_wall_s > 0 || stop_signals_caught() ||
+                     (options_.keep_intervals && options_.max_trace_intervals > 0);
   sc_time slice = watch ? sc_time(1, sc_core::SC_US) : sim_limit;
   // Before the first sc_start nothing is pending yet: the processes start in its initialisation.
   for (bool first = true; first || sc_core::sc_pending_activity(); first = false) {
@@ -415,10 +421,7 @@ void Machine::run_with_limits() {
       limit_ = Limit::trace_size;
       return;
     }
-    if (options_.max_wall_s > 0 && wall_s() >= options_.max_wall_s) {
-      if (sc_core::sc_pending_activity()) limit_ = Limit::wall_time;
-      return;
-    }
+    if (sc_core::sc_pending_activity() && should_stop_now(wall_s())) return;
     const double took = wall_s() - before;
     if (took < 0.02 && slice < sc_core::sc_max_time() / 2) slice = slice * 2;
     if (took > 0.2 && slice > sc_time(2, sc_core::SC_PS)) slice = slice / 2;
@@ -433,6 +436,10 @@ const char* to_string(Limit limit) {
       return "max_wall_time";
     case Limit::trace_size:
       return "max_trace_intervals";
+    case Limit::livelock:
+      return "livelock";
+    case Limit::interrupted:
+      return "interrupted";
     case Limit::none:
       break;
   }
@@ -440,7 +447,7 @@ const char* to_string(Limit limit) {
 }
 
 bool Machine::limited() const {
-  return options_.max_sim_s > 0 || options_.max_wall_s > 0 ||
+  return options_.max_sim_s > 0 || options_.max_wall_s > 0 || stop_signals_caught() ||
          (options_.keep_intervals && options_.max_trace_intervals > 0);
 }
 

@@ -60,11 +60,15 @@ struct MachineOptions {
   // With keep_intervals: told the trace's expected size once a workload's first progress report
   // lets it be extrapolated; may be empty.
   std::function<void(const TraceForecast&)> trace_forecast;
+  // Heartbeats (Machine::heartbeat) in a row at one simulated instant that make a livelock: work
+  // handed back and forth without simulated time advancing. A core synchronises with SystemC at
+  // least once per simulated cycle it waits, so no program that makes progress comes near.
+  std::int64_t livelock_heartbeats = 1'000'000;
 };
 
-enum class Limit { none, sim_time, wall_time, trace_size };
-// The report's name of a limit: "max_sim_time", "max_wall_time", "max_trace_intervals" ("" for
-// none).
+enum class Limit { none, sim_time, wall_time, trace_size, livelock, interrupted };
+// The report's name of a limit: "max_sim_time", "max_wall_time", "max_trace_intervals",
+// "livelock", "interrupted" ("" for none).
 const char* to_string(Limit limit);
 
 // A process that had not ended when the simulation ran out of events.
@@ -99,8 +103,20 @@ class Machine {
   // must outlive the program's use of SystemC.
   bool tears_down() const;
   // Which limit stopped the run (MachineOptions::max_sim_s, max_wall_s, max_trace_intervals), if
-  // one did.
+  // one did, or a livelock or a stop request (network/stop_request.hpp).
   Limit limit_reached() const { return limit_; }
+  // The signal whose stop request stopped the run (Limit::interrupted), else 0.
+  int stop_signal() const { return stop_signal_; }
+  // After a stop (limit_reached() is not none): the processes that had not ended, with what each
+  // was doing.
+  const std::vector<BlockedProcess>& running_at_stop() const { return running_at_stop_; }
+  // Called by a process that runs long between its waits (an instruction-set simulator's core, at
+  // each synchronisation with SystemC), so that a run stops even where simulated time stands
+  // still: MachineOptions::livelock_heartbeats at one instant stop it as a livelock; a stop
+  // request and the wall-time limit are read every 1024 heartbeats. A stopped run's processes
+  // are not resumed: stopping() says so to a process that would go on (network/heartbeat.cpp).
+  void heartbeat();
+  bool stopping() const { return limit_ != Limit::none; }
   // The trace intervals kept so far (every processor's and link direction's).
   std::int64_t kept_intervals() const;
   // The trace's forecast, once a workload's progress has given one (intervals < 0 before).
@@ -204,6 +220,15 @@ class Machine {
   std::chrono::steady_clock::time_point created_ = std::chrono::steady_clock::now();
   double elaboration_s_ = 0;
   Limit limit_ = Limit::none;
+  int stop_signal_ = 0;
+  void stop(Limit why);
+  bool should_stop_now(double wall_s);
+  struct Heartbeats {
+    std::int64_t count = 0, at_this_instant = 0;
+    double instant_s = -1;
+    std::chrono::steady_clock::time_point started;
+  } heartbeats_;
+  std::vector<BlockedProcess> running_at_stop_;
   std::vector<std::string> wait_cycle_;
   FaultLog faults_;
 };

@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config libsystemc-dev libeigen3-dev libfmt-dev googletest libgtest-dev
           libtomlplusplus-dev libcli11-dev liborocos-kdl-dev nlohmann-json3-dev
-          python3 python3-matplotlib parallel)  # tools/plot; sweep jobs through GNU parallel (tests)
+          python3 python3-matplotlib parallel  # tools/plot; sweep jobs through GNU parallel (tests)
+          ccache)  # compiler cache: a rebuild or a second clone recompiles only what changed (cmake/compiler_cache.cmake)
 # Optional, not installed here: libsimgrid-dev (bench/simgrid_bench's SimGrid side), clang (fuzz/).
 missing=()
 for p in "${packages[@]}"; do

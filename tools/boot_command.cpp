@@ -4,11 +4,14 @@
 // `run --json` gives it) to --json REPORT.
 #include <unistd.h>
 
+#include <csignal>
+
 #include <chrono>
 #include <iostream>
 
 #include <fmt/format.h>
 
+#include "network/stop_request.hpp"
 #include "network/topology_file.hpp"
 #include "tools/commands.hpp"
 #include "tools/report_format.hpp"
@@ -33,7 +36,7 @@ struct BootArgs {
   bool strict = false;
   std::string json;
   TraceFiles traces;
-  double max_simulated_s = 0;
+  double max_simulated_s = 0, max_host_s = 0;
   std::int64_t max_instructions = 0;
   std::vector<std::string> program_args;
 };
@@ -117,15 +120,55 @@ void print_account(const workloads::RunReport& r) {
                              p.busy_us, p.idle_us, 100 * p.utilisation);
 }
 
+// A run stopped before its end: by what, when, and each processor's state (the report and --json
+// are written already). A livelock is the program's failure (exit 1, as a deadlock); a stop
+// request exits as the signal would have (128 + its number); a limit exits kExitLimit.
+int report_stop(const BootArgs& args, const workloads::RunReport& report) {
+  std::string by;
+  int exit_code = kExitLimit;
+  switch (report.limit) {
+    case network::Limit::trace_size:
+      by = trace_limit_text(args.traces, report);
+      break;
+    case network::Limit::sim_time:
+      by = fmt::format("--max-simulated-s {}", args.max_simulated_s);
+      break;
+    case network::Limit::wall_time:
+      by = fmt::format("--max-host-s {}", args.max_host_s);
+      break;
+    case network::Limit::livelock:
+      by = "a livelock: simulated time stood still while the processors handed work back and forth";
+      exit_code = kExitFailure;
+      break;
+    case network::Limit::interrupted:
+      by = fmt::format("signal {} ({})", report.stop_signal,
+                       report.stop_signal == SIGINT ? "SIGINT" : "SIGTERM");
+      exit_code = 128 + report.stop_signal;
+      break;
+    case network::Limit::none:
+      break;
+  }
+  std::cerr << fmt::format("error: stopped by {} at simulated time {:.6f} s\n", by,
+                           report.simulated_us * 1e-6);
+  if (const auto* ps = field(report.workload, "processors"))
+    for (const auto& p : ps->items())
+      std::cerr << fmt::format("  {}: {}\n", p.get("name")->to_text(), p.get("state")->to_text());
+  return exit_code;
+}
+
 int boot_file(const BootArgs& args) {
   if (!(args.max_simulated_s >= 0))
     throw std::invalid_argument("--max-simulated-s: give a number of seconds, 0 for no limit");
+  if (!(args.max_host_s >= 0))
+    throw std::invalid_argument("--max-host-s: give a number of seconds, 0 for no limit");
   if (!args.json.empty()) workloads::check_output_path(args.json, "--json");
   check_trace_files(args.traces);
   const Scene scene = boot_scene(args);
   workloads::RunInputs inputs = inputs_from(scene);
   keep_trace(args.traces, inputs.options);
   inputs.options.max_sim_s = args.max_simulated_s;
+  inputs.options.max_wall_s = args.max_host_s;
+  network::catch_stop_signals();     // Ctrl-C and kill stop the run with its report written
   inputs.options.tear_down = false;  // the command exits after this run (network::Machine)
   const workloads::RunReport report = workloads::run(inputs);
   std::cout << std::flush;
@@ -138,14 +181,7 @@ int boot_file(const BootArgs& args) {
       std::cerr << fmt::format("  {} on {}: {}\n", b.process, b.processor, b.status);
     return kExitFailure;
   }
-  if (report.limit != network::Limit::none) {
-    const std::string limit = report.limit == network::Limit::trace_size
-                                  ? trace_limit_text(args.traces, report)
-                                  : fmt::format("--max-simulated-s {}", args.max_simulated_s);
-    std::cerr << fmt::format("error: stopped by {} at simulated time {:.6f} s\n", limit,
-                             report.simulated_us * 1e-6);
-    return kExitLimit;
-  }
+  if (report.limit != network::Limit::none) return report_stop(args, report);
   if (field(report.workload, "instruction_limit")) {
     std::cerr << fmt::format("error: stopped by --max-instructions {} at simulated time {:.6f} s\n",
                              args.max_instructions, report.simulated_us * 1e-6);
@@ -195,6 +231,10 @@ void add_boot_command(CLI::App& app) {
   add_trace_options(*cmd, args->traces);
   cmd->add_option("--max-simulated-s", args->max_simulated_s,
                   "stop after this many seconds of simulated time (exit code 4; 0: no limit)")
+      ->type_name("SECONDS");
+  cmd->add_option("--max-host-s", args->max_host_s,
+                  "stop after this many seconds of host (wall-clock) time (exit code 4; 0: no "
+                  "limit)")
       ->type_name("SECONDS");
   cmd->add_option("--max-instructions", args->max_instructions,
                   "stop when a processor has executed this many instructions (0: no limit)")

@@ -13,6 +13,10 @@ const char* limit_name(network::Limit limit) {
       return "simulated-time";
     case network::Limit::trace_size:
       return "trace-size";
+    case network::Limit::livelock:
+      return "livelock";
+    case network::Limit::interrupted:
+      return "stop-request";
     default:
       return "wall-time";
   }
@@ -66,8 +70,11 @@ std::string format_text(const workloads::RunReport& r, const std::string& note) 
     out += "\n";
   }
   if (r.limit != network::Limit::none) {
-    out += fmt::format("\nSTOPPED by the {} limit before the run ended: no workload results\n",
-                       limit_name(r.limit));
+    out += fmt::format(
+        "\nSTOPPED by the {} limit before the run ended{}\n", limit_name(r.limit),
+        r.workload.is_record() && !r.workload.record().empty() ? "" : ": no workload results");
+    for (const auto& p : r.running_at_stop)
+      out += fmt::format("  {} on {}: {}\n", p.process, p.processor, p.status);
   } else if (!r.blocked.empty()) {
     out += "\nDEADLOCK: the simulation ran out of events with processes still blocked:\n";
     for (const network::FaultRecord& f : r.faults)

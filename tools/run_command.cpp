@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "network/config_error.hpp"
+#include "network/stop_request.hpp"
 #include "tools/cli_numbers.hpp"
 #include "tools/commands.hpp"
 #include "tools/report_format.hpp"
@@ -70,6 +71,10 @@ std::string limit_text(const RunArgs& args, const workloads::RunReport& report) 
       return fmt::format("--max-sim-time {} s", args.max_sim_s);
     case network::Limit::trace_size:
       return trace_limit_text(args.traces, report);
+    case network::Limit::livelock:
+      return "a livelock (simulated time stood still while processes handed work back and forth)";
+    case network::Limit::interrupted:
+      return fmt::format("signal {}", report.stop_signal);
     default:
       return fmt::format("--max-wall-time {} s", args.max_wall_s);
   }
@@ -85,6 +90,7 @@ int run_scene(const RunArgs& args) {
   inputs.options.max_sim_s = args.max_sim_s;
   inputs.options.max_wall_s = args.max_wall_s;
   inputs.options.tear_down = false;  // the command exits after this run: no teardown (Machine)
+  network::catch_stop_signals();     // Ctrl-C and kill stop the run with its report written
   RunProgress progress(isatty(STDERR_FILENO));
   inputs.options.progress = [&progress](std::int64_t done, std::int64_t total) {
     progress.update(done, total);
@@ -101,7 +107,8 @@ int run_scene(const RunArgs& args) {
         "error: stopped by {} at simulated time {:.3f} us, before the run ended: "
         "no workload results\n",
         limit_text(args, report), report.simulated_us);
-    return kExitLimit;
+    if (report.limit == network::Limit::interrupted) return 128 + report.stop_signal;
+    return report.limit == network::Limit::livelock ? kExitFailure : kExitLimit;
   }
   if (!report.failure.empty()) {
     std::cerr << "error: the run failed: " << report.failure << "\n";

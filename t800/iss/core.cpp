@@ -41,7 +41,7 @@ void Core::start_boot_program(Word length, int boot_link) {
   r_.b = r_.a = 0;
   running_ = true;
   slice_start_ = cycle();
-  stepper_.restart_fetch();
+  control_moved();
 }
 
 StopReason Core::run(std::int64_t until, std::int64_t max_instructions) {
@@ -82,15 +82,22 @@ void Core::step(const Decoded& d) {
   t.address = at;
   stepper_.set_code_external(memory_.external(at));
   r_.iptr = at + d.bytes;
+  stepping_ = true;
   try {
     execute(d, t);
   } catch (const MemoryFault& fault) {
+    stepping_ = moved_ = false;
     r_.iptr = at;
     memory_fault(fault, at);
     return;
   }
+  stepping_ = false;
   ++instructions_;
   stepper_.step(t);
+  if (moved_) {
+    moved_ = false;
+    stepper_.restart_fetch();
+  }
   if (r_.error && r_.halt_on_error && !halt_) [[unlikely]]
     halt("HaltOnError: Error set by " + error_by_, at);
 }
@@ -147,7 +154,7 @@ void Core::execute(const Decoded& d, TimedStep& t) {
   switch (d.op) {
     case Op::j:
       r_.iptr += n;
-      stepper_.restart_fetch();
+      control_moved();
       if (n == 0 && j0_break_) {
         halt("break: j 0 with the T805's j0 break enabled", r_.iptr);
         return;
@@ -187,14 +194,14 @@ void Core::execute(const Decoded& d, TimedStep& t) {
       memory_.set_word(r_.wptr + 12, r_.c);
       r_.a = back;
       r_.iptr += n;
-      stepper_.restart_fetch();
+      control_moved();
       return;
     }
     case Op::cj:
       if (r_.a == 0) {
         r_.iptr += n;
         t.param = 1;  // taken
-        stepper_.restart_fetch();
+        control_moved();
       } else {
         pop();
       }

@@ -185,6 +185,15 @@ class Core {
   void unblocked(Word wptr) { waiting_.erase(wptr); }
 
   void data_at(TimedStep& t, Word address) { t.data_external = memory_.external(address); }
+  // Control goes elsewhere (a jump taken, a call, a process switch): the prefetch buffer is emptied
+  // once the instruction doing it is timed -- its own code was fetched before it ran -- or at once
+  // between instructions.
+  void control_moved() {
+    if (stepping_)
+      moved_ = true;
+    else
+      stepper_.restart_fetch();
+  }
 
   const ProcessorModel& processor_;
   Memory memory_;
@@ -194,7 +203,9 @@ class Core {
   Fpu fpu_;
   LinkEngine* links_ = nullptr;
   std::int64_t instructions_ = 0;
-  bool running_ = false;  // a process holds the CPU
+  bool running_ = false;   // a process holds the CPU
+  bool stepping_ = false;  // an instruction is executing (control_moved)
+  bool moved_ = false;     // it moved control elsewhere
   bool sync_requested_ = false;
   bool low_interrupted_ = false;  // a low-priority process's state is in the save area
   Fpu saved_low_fpu_;             // its FPU registers (the chip keeps them in the FPU)

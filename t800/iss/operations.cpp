@@ -285,13 +285,13 @@ void Core::operate(const Decoded& d, TimedStep& t) {
     }
     case Op::gcall:
       std::swap(r.a, r.iptr);
-      stepper_.restart_fetch();
+      control_moved();
       return;
     case Op::ret:
       data_at(t, r.wptr);
       r.iptr = memory_.word(r.wptr);
       r.wptr += 16;
-      stepper_.restart_fetch();
+      control_moved();
       return;
     case Op::ldpi:
       r.a += r.iptr;
@@ -309,7 +309,7 @@ void Core::operate(const Decoded& d, TimedStep& t) {
         memory_.set_word(r.b, memory_.word(r.b) + 1);
         r.iptr -= r.a;
         t.param = 1;  // looping
-        stepper_.restart_fetch();
+        control_moved();
         timeslice_point();
       }
       return;
@@ -414,7 +414,7 @@ void Core::operate(const Decoded& d, TimedStep& t) {
       if (count == 0) {
         r.wptr = block & ~3u;
         r.iptr = memory_.word(block);
-        stepper_.restart_fetch();
+        control_moved();
       } else {
         deschedule("ended (endp)", 0);
         waiting_.erase(r.wptr);
@@ -512,7 +512,7 @@ void Core::operate(const Decoded& d, TimedStep& t) {
       return;
     case Op::altend:
       r.iptr += ws(kSlotTemp);
-      stepper_.restart_fetch();
+      control_moved();
       return;
     default:
       if (isa::info(d.op).encoding == isa::Encoding::fpu_entry || d.op >= Op::fpldnlsn) {

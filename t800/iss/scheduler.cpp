@@ -68,7 +68,7 @@ bool Core::run_next_from_queue(int p) {
   r_.iptr = memory_.word(slot_of(wptr, kSlotIptr));
   running_ = true;
   if (p == kLow) slice_start_ = cycle();
-  stepper_.restart_fetch();
+  control_moved();
   return true;
 }
 
@@ -86,7 +86,7 @@ void Core::next_process() {
     memory_.set_word(kSaveWdesc, kNotProcess);
     low_interrupted_ = false;
     running_ = true;
-    stepper_.restart_fetch();
+    control_moved();
     return;
   }
   run_next_from_queue(kLow);

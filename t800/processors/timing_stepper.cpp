@@ -32,7 +32,10 @@ std::int64_t TimingStepper::Bus::access(std::int64_t at, int words) {
 std::int64_t TimingStepper::Fetcher::ready_external(std::int64_t begin, std::int64_t end,
                                                     std::int64_t at) {
   const std::int64_t first = begin / 4, last = (end - 1) / 4;
-  if (words_.empty() || first < first_) {
+  // Straight-line code never skips a word: an instruction before the buffer or past the word being
+  // fetched next was reached by a jump, and its code is fetched from its own address (a forward
+  // jump does not fetch the words it jumps over).
+  if (words_.empty() || first < first_ || first > first_ + std::int64_t(words_.size())) {
     words_.clear();
     first_ = first;
   }

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../cli/cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 namespace boot_test {
 
@@ -36,7 +37,7 @@ inline void write_text(const fs::path& path, const std::string& text) {
 // An example's source with `name = value` constants replaced.
 inline std::string example_with(const std::string& example,
                                 const std::vector<std::pair<std::string, std::string>>& set) {
-  std::string text = read_text(fs::path(T800SIM_SOURCE_DIR) / "examples/iss" / example);
+  std::string text = read_text(fs::path(test_paths::source_dir()) / "examples/iss" / example);
   for (const auto& [name, value] : set) {
     const std::string key = "\n" + name + " = ";
     const auto at = text.find(key);

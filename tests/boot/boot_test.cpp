@@ -4,12 +4,13 @@
 
 #include "t800/link_timing.hpp"
 #include "tests/boot/boot_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
 using namespace boot_test;
 
-const std::string kTopologies = std::string(T800SIM_SOURCE_DIR) + "/configs/topologies/";
+const std::string kTopologies = test_paths::source_dir() + "/configs/topologies/";
 
 TEST(Boot, HelloWritesToStdoutAndExitsWithTheProgramsStatus) {
   const auto dir = scratch("hello");
@@ -187,6 +188,85 @@ TEST(Boot, AStrictWildAccessHaltsWithTheAddress) {
   const Booted strict = boot(dir, file, "--strict --memory 65536");
   EXPECT_EQ(strict.output.exit_code, 3) << strict.output.out;
   EXPECT_NE(strict.output.out.find("#7FFFFFF0"), std::string::npos) << strict.output.out;
+}
+
+// Processors of different clocks in one chain (chain.s boots six), as on an IMS B012 (a T805-30,
+// whose 33.33 ns cycle is no whole number of the kernel's picoseconds, beside T805-25s): each boots
+// the next and they pass the sum back while the others compute. Cores that stopped within a cycle
+// of each other's link events once handed each other waits of no time for ever (a livelock at 44 ms
+// of the ray tracer); now the run ends, every processor reached, inside the host time it is given.
+TEST(Boot, AChainOfDifferentClocksRunsToItsEnd) {
+  const auto dir = scratch("mixed-clocks");
+  write_text(dir / "chain.toml", R"(host = "P0.link0"
+[[processor]]
+name = "P0"
+type = "T805-30"
+[[processor]]
+name = "P1"
+type = "T805-25"
+[[processor]]
+name = "P2"
+type = "T805-25"
+[[processor]]
+name = "P3"
+type = "T800-20"
+[[processor]]
+name = "P4"
+type = "T805-30"
+[[processor]]
+name = "P5"
+type = "T805-25"
+[[link]]
+from = "P0.link1"
+to = "P1.link0"
+[[link]]
+from = "P1.link1"
+to = "P2.link0"
+[[link]]
+from = "P2.link1"
+to = "P3.link0"
+[[link]]
+from = "P3.link1"
+to = "P4.link0"
+[[link]]
+from = "P4.link1"
+to = "P5.link0"
+)");
+  for (const std::string iterations : {"1", "1000", "33333"}) {
+    const std::string file =
+        assemble(dir, "chain", example_with("chain.s", {{"iterations", iterations}}));
+    ASSERT_FALSE(file.empty());
+    const Booted b =
+        boot(dir, file, "--network " + (dir / "chain.toml").string() + " --max-host-s 60");
+    EXPECT_EQ(b.output.exit_code, 6) << iterations << ": " << b.output.out;  // the processors
+    ASSERT_TRUE(b.report.is_object()) << b.output.out;
+    for (const auto& p : b.report["workload"]["processors"]) {
+      EXPECT_TRUE(p["booted"]) << p;
+      // Fewer synchronisations than instructions: a core never stops for SystemC without
+      // running at least a cycle's worth.
+      EXPECT_LT(p["synchronisations"].get<double>(), p["instructions"].get<double>()) << p;
+    }
+  }
+}
+
+// A run stopped by a limit still says what ran: instructions and cycles per processor, and where
+// each one was.
+TEST(Boot, AStoppedRunReportsWhatRan) {
+  const auto dir = scratch("stopped");
+  const std::string file = assemble(dir, "forever", "ajw 8\nloop: j loop\n");
+  const Booted b = boot(dir, file, "--max-simulated-s 0.0015");
+  EXPECT_EQ(b.output.exit_code, 4) << b.output.out;
+  ASSERT_TRUE(b.report.is_object()) << b.output.out;
+  EXPECT_EQ(b.report["stopped_by"], "max_sim_time");
+  const auto& p = b.report["workload"]["processors"][0];
+  // The loop is a backward jump of two bytes, nfix 0; j 14: the prefix's cycle and j's 3 (T800
+  // datasheet). 1.5 ms of a T800-20's 50 ns cycles is 30,000 cycles, less the few the boot took:
+  // some 7,500 jumps, and no more: the core runs ahead of SystemC, but not past the limit (the
+  // instruction under way at the limit finishes, 4 cycles at most).
+  EXPECT_NEAR(p["instructions"].get<double>(), 30000.0 / 4, 20) << p;
+  EXPECT_LE(p["cycles"].get<double>(), 30000 + 4) << p;
+  EXPECT_NE(p["state"].get<std::string>().find("running at Iptr"), std::string::npos) << p;
+  EXPECT_NE(b.output.out.find("P0: running at Iptr"), std::string::npos) << b.output.out;
 }
 
 TEST(Boot, InputOnALinkToNothingIsADeadlockNamingTheProcess) {

@@ -14,6 +14,7 @@
 #include <string>
 #include <thread>
 #include <vector>
+#include "tests/test_paths.hpp"
 
 namespace cli_test {
 
@@ -23,13 +24,15 @@ struct Output {
 };
 
 inline Output run(const std::string& args) {
-  const std::string command = "cd " T800SIM_SOURCE_DIR " && SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 timeout 120 " +
-                              std::string(T800SIM_BINARY_DIR) + "/t800sim " + args;
+  const std::string command = std::string("cd ") + test_paths::source_dir() +
+                              " && SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 timeout 120 " +
+                              test_paths::binary_dir() + "/t800sim " + args;
   Output o;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return o;
   std::array<char, 4096> buffer;
-  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) o.out.append(buffer.data(), n);
+  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
+    o.out.append(buffer.data(), n);
   const int status = pclose(pipe);
   o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return o;
@@ -40,13 +43,13 @@ inline Output run(const std::string& args) {
 inline pid_t start(const std::vector<std::string>& args) {
   const pid_t pid = fork();
   if (pid != 0) return pid;
-  if (chdir(T800SIM_SOURCE_DIR) != 0) _exit(127);
+  if (chdir(test_paths::source_dir().c_str()) != 0) _exit(127);
   const int null = open("/dev/null", O_RDWR);
   dup2(null, 0);
   dup2(null, 1);
   dup2(null, 2);
   setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
-  std::vector<std::string> argv{std::string(T800SIM_BINARY_DIR) + "/t800sim"};
+  std::vector<std::string> argv{test_paths::binary_dir() + "/t800sim"};
   argv.insert(argv.end(), args.begin(), args.end());
   std::vector<char*> c_argv;
   for (std::string& a : argv) c_argv.push_back(a.data());

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "workloads/params.hpp"
 #include "workloads/registry.hpp"
 
@@ -24,7 +25,7 @@ bool has(const std::string& text, const std::string& part) {
 // A scratch directory for one test, under the build tree.
 std::string scratch() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(T800SIM_BINARY_DIR) / "test-output" / info->name();
+  const fs::path dir = fs::path(test_paths::binary_dir()) / "test-output" / info->name();
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();
@@ -90,7 +91,8 @@ TEST(Messages, RunWithoutASceneListsTheShippedScenes) {
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_TRUE(has(o.out, "needs a scene file")) << o.out;
   int scenes = 0;
-  for (const auto& e : fs::directory_iterator(fs::path(T800SIM_SOURCE_DIR) / "configs/scenes"))
+  for (const auto& e :
+       fs::directory_iterator(fs::path(test_paths::source_dir()) / "configs/scenes"))
     if (e.path().extension() == ".toml") {
       ++scenes;
       EXPECT_TRUE(has(o.out, e.path().filename().string())) << e.path() << "\n" << o.out;
@@ -101,7 +103,7 @@ TEST(Messages, RunWithoutASceneListsTheShippedScenes) {
 // A scene copied elsewhere loses its calibration file: the error points at the scene's line.
 TEST(Messages, AMissingCalibrationFileIsReportedAtTheSceneLine) {
   const std::string copy = scratch() + "/farm.toml";
-  fs::copy_file(fs::path(T800SIM_SOURCE_DIR) / "configs/scenes/dynamics-farm.toml", copy);
+  fs::copy_file(fs::path(test_paths::source_dir()) / "configs/scenes/dynamics-farm.toml", copy);
   const int line = line_of(copy, "file = ");
   ASSERT_GT(line, 0);
   const auto o = run("run " + copy + " 2>&1");
@@ -115,7 +117,7 @@ TEST(Messages, PaperSaysWhereTable6IsAnalysed) {
   const auto o = run("paper --table 6 2>&1");
   ASSERT_EQ(o.exit_code, 0) << o.out;
   EXPECT_TRUE(has(o.out, "docs/table6.md")) << o.out;
-  EXPECT_TRUE(fs::exists(fs::path(T800SIM_SOURCE_DIR) / "docs/table6.md"));
+  EXPECT_TRUE(fs::exists(fs::path(test_paths::source_dir()) / "docs/table6.md"));
 }
 
 // The precision changes every compute cost: a report always says which one ran and why.
@@ -129,8 +131,9 @@ TEST(Messages, EveryReportStatesThePrecisionAndWhereItCameFrom) {
   const std::string dir = scratch();
   const std::string scene =
       write(dir + "/farm.toml",
-            "[network]\nfamily = \"tree\"\nworkers = 1\n[workload]\nkind = "
-            "\"dynamics-farm\"\nrobot = \"" T800SIM_SOURCE_DIR "/configs/robots/stanford.toml\"\n");
+            std::string("[network]\nfamily = \"tree\"\nworkers = 1\n[workload]\nkind = "
+                        "\"dynamics-farm\"\nrobot = \"") +
+                test_paths::source_dir() + "/configs/robots/stanford.toml\"\n");
   const auto dflt = run("run " + scene + " --json 2>&1");
   ASSERT_EQ(dflt.exit_code, 0) << dflt.out;
   const auto& declared =
@@ -147,8 +150,10 @@ TEST(Messages, ThePaperModelIsRefusedForARobotItDoesNotFit) {
   const std::string dir = scratch();
   const std::string scene =
       write(dir + "/puma.toml",
-            "[network]\nfamily = \"tree\"\nworkers = 3\n[workload]\nkind = \"dynamics-farm\"\n"
-            "model = \"paper\"\nrobot = \"" T800SIM_SOURCE_DIR "/configs/robots/puma560.toml\"\n");
+            std::string(
+                "[network]\nfamily = \"tree\"\nworkers = 3\n[workload]\nkind = \"dynamics-farm\"\n"
+                "model = \"paper\"\nrobot = \"") +
+                test_paths::source_dir() + "/configs/robots/puma560.toml\"\n");
   const auto o = run("run " + scene + " 2>&1");
   EXPECT_EQ(o.exit_code, 2) << o.out;
   for (const char* words : {"model \"paper\" does not fit", "Puma 560", "axial inertia",

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -15,7 +16,7 @@ namespace fs = std::filesystem;
 std::string fresh_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const fs::path dir =
-      fs::path(T800SIM_BINARY_DIR) / "test-output" / info->test_suite_name() / info->name();
+      fs::path(test_paths::binary_dir()) / "test-output" / info->test_suite_name() / info->name();
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();

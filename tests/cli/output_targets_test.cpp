@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "workloads/run/output_file.hpp"
 
 namespace {
@@ -31,7 +32,7 @@ using workloads::write_output_file;
 std::string fresh_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const fs::path dir =
-      fs::path(T800SIM_BINARY_DIR) / "test-output" / info->test_suite_name() / info->name();
+      fs::path(test_paths::binary_dir()) / "test-output" / info->test_suite_name() / info->name();
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "workloads/run/result_value.hpp"
 
 using workloads::ResultValue;
@@ -52,7 +53,8 @@ TEST(ResultJson, AnyLabelGivesValidJson) {
 }
 
 TEST(ResultJson, EveryShippedSceneReportParsesAndKeepsItsNumbers) {
-  const std::filesystem::path scenes = std::filesystem::path(T800SIM_SOURCE_DIR) / "configs/scenes";
+  const std::filesystem::path scenes =
+      std::filesystem::path(test_paths::source_dir()) / "configs/scenes";
   int checked = 0;
   for (const auto& entry : std::filesystem::directory_iterator(scenes)) {
     if (entry.path().extension() != ".toml") continue;

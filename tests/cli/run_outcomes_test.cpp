@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -53,8 +54,8 @@ TEST(RunOutcome, ASingularEliminationIsAFailure) {
 // does not take it as done.
 TEST(RunOutcome, ASweepRecordsFailedSolvesAsFailedPointsAndRetriesThem) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir = std::filesystem::path(T800SIM_BINARY_DIR) / "test-output" /
-                                    info->test_suite_name() / info->name();
+  const std::filesystem::path dir = std::filesystem::path(test_paths::binary_dir()) /
+                                    "test-output" / info->test_suite_name() / info->name();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string out = (dir / "r.csv").string();

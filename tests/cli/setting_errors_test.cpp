@@ -8,6 +8,7 @@
 
 #include "cli_fixtures.hpp"
 #include "network/config_error.hpp"
+#include "tests/test_paths.hpp"
 #include "tools/paper_data.hpp"
 #include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
@@ -17,13 +18,13 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string source(const std::string& relative) {
-  return std::string(T800SIM_SOURCE_DIR) + "/" + relative;
+  return test_paths::source_dir() + "/" + relative;
 }
 
 std::string scene_file(const std::string& text) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const fs::path dir =
-      fs::path(T800SIM_BINARY_DIR) / "test-output" / info->test_suite_name() / info->name();
+      fs::path(test_paths::binary_dir()) / "test-output" / info->test_suite_name() / info->name();
   fs::create_directories(dir);
   const std::string path = (dir / "scene.toml").string();
   std::ofstream(path) << text;

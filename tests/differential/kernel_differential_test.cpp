@@ -42,6 +42,7 @@
 #include "t800/codegen/generator.hpp"
 #include "t800/iss/kernel_loader.hpp"
 #include "t800sim/kernel.hpp"
+#include "tests/test_paths.hpp"
 #include "tools/robot_file.hpp"
 #include "workloads/dynamics/assembly.hpp"
 #include "workloads/dynamics/evaluate.hpp"
@@ -198,7 +199,7 @@ std::vector<double> vector_values(const V& v) {
 
 const dynamics::RobotModel& stanford() {
   static const dynamics::RobotModel model =
-      tools::load_robot(std::string(T800SIM_SOURCE_DIR) + "/configs/robots/stanford.toml");
+      tools::load_robot(test_paths::source_dir() + "/configs/robots/stanford.toml");
   return model;
 }
 

@@ -8,13 +8,14 @@
 #include <kdl/jntspaceinertiamatrix.hpp>
 #include <string>
 
+#include "tests/test_paths.hpp"
 #include "tools/robot_file.hpp"
 #include "workloads/dynamics/assembly.hpp"
 
 namespace dynamics::testing {
 
 inline std::string stanford_path() {
-  return std::string(T800SIM_SOURCE_DIR) + "/configs/robots/stanford.toml";
+  return test_paths::source_dir() + "/configs/robots/stanford.toml";
 }
 
 inline const RobotModel& stanford() {

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "dynamics_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 namespace dynamics {
 namespace {
@@ -63,8 +64,7 @@ TEST(KdlAgreement, FullModelMatchesAtRandomStates) {
 // inequality) through the same code, against KDL.
 TEST(KdlAgreement, PumaFullModelMatchesAtRandomStates) {
   expect_within_tolerance(against_kdl(
-      tools::load_robot(std::string(T800SIM_SOURCE_DIR) + "/configs/robots/puma560.toml"), 50,
-      560));
+      tools::load_robot(test_paths::source_dir() + "/configs/robots/puma560.toml"), 50, 560));
 }
 
 // Each Coriolis term on its own: KDL's c(q, q̇) = Σ C_ijk q̇_j q̇_k polarised over unit rates gives

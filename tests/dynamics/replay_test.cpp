@@ -11,6 +11,7 @@
 #include <random>
 
 #include "dynamics_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "workloads/dynamics/evaluate.hpp"
 #include "workloads/dynamics/replay.hpp"
 #include "workloads/dynamics/subtask_set.hpp"
@@ -93,7 +94,7 @@ void expect_kernel_bits(const RobotModel& model, const std::string& name) {
 TEST(SubtaskReplay, EveryTermOfEveryRobotIsTheKernelsValueToTheBit) {
   int robots = 0;
   for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(T800SIM_SOURCE_DIR) + "/configs/robots")) {
+       std::filesystem::directory_iterator(test_paths::source_dir() + "/configs/robots")) {
     if (entry.path().extension() != ".toml") continue;
     const RobotModel model = tools::load_robot(entry.path().string());
     expect_kernel_bits<float>(model, entry.path().filename());

@@ -8,6 +8,7 @@
 
 #include "dynamics_fixtures.hpp"
 #include "network/config_error.hpp"
+#include "tests/test_paths.hpp"
 
 namespace dynamics {
 namespace {
@@ -141,7 +142,7 @@ TEST(RobotFile, TheTriangleInequalityOptOutNeedsANoteAndKeepsTheData) {
 // as the toolbox gives them (0, 0.35, 0).
 TEST(RobotFile, LoadsThePublishedPuma560) {
   const RobotModel model =
-      tools::load_robot(std::string(T800SIM_SOURCE_DIR) + "/configs/robots/puma560.toml");
+      tools::load_robot(test_paths::source_dir() + "/configs/robots/puma560.toml");
   EXPECT_EQ(model.name, "Puma 560");
   EXPECT_EQ(model.joints[0].link.inertia, Eigen::Vector3d(0, 0.35, 0));
   EXPECT_DOUBLE_EQ(model.joints[1].dh.a, 0.4318);

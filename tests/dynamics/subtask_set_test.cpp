@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "dynamics_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 namespace dynamics {
 namespace {
@@ -99,7 +100,7 @@ TEST(SubtaskSets, PaperSimplificationHoldsForTheStanfordArmOnly) {
   EXPECT_EQ(stanford_arm.dropped.size(), 18u);
   EXPECT_LE(stanford_arm.largest_dropped, kNegligible * stanford_arm.smallest_kept);
   const RobotModel puma =
-      tools::load_robot(std::string(T800SIM_SOURCE_DIR) + "/configs/robots/puma560.toml");
+      tools::load_robot(test_paths::source_dir() + "/configs/robots/puma560.toml");
   const PaperSimplification p = paper_simplification(puma);
   EXPECT_FALSE(p.holds());
   EXPECT_GT(p.largest_dropped, kNegligible * p.smallest_kept);

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "dynamics_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "workloads/dynamics/evaluate.hpp"
 #include "workloads/dynamics/term_sweep.hpp"
 
@@ -38,7 +39,7 @@ void expect_kernel_values(const RobotModel& model, const std::string& name) {
 TEST(TermSweep, EveryTermOfEveryRobotIsTheKernelsValueToTheBit) {
   int robots = 0;
   for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(T800SIM_SOURCE_DIR) + "/configs/robots")) {
+       std::filesystem::directory_iterator(test_paths::source_dir() + "/configs/robots")) {
     if (entry.path().extension() != ".toml") continue;
     expect_kernel_values(tools::load_robot(entry.path().string()), entry.path().filename());
     ++robots;

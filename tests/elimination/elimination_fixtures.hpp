@@ -6,6 +6,7 @@
 
 #include <Eigen/LU>
 
+#include "tests/test_paths.hpp"
 #include "tools/robot_file.hpp"
 #include "workloads/dynamics/subtask_set.hpp"
 #include "workloads/elimination/system.hpp"
@@ -14,7 +15,7 @@ namespace elimination_test {
 
 inline const dynamics::RobotModel& stanford() {
   static const dynamics::RobotModel model =
-      tools::load_robot(std::string(T800SIM_SOURCE_DIR) + "/configs/robots/stanford.toml");
+      tools::load_robot(test_paths::source_dir() + "/configs/robots/stanford.toml");
   return model;
 }
 

@@ -11,6 +11,7 @@
 
 #include "network/machine.hpp"
 #include "network/topology_file.hpp"
+#include "tests/test_paths.hpp"
 #include "workloads/elimination/gauss.hpp"
 #include "workloads/pipeline/pipeline.hpp"
 
@@ -25,8 +26,8 @@ struct PipelineRun {
 inline PipelineRun run_pipeline(int m, const elimination::LinearSystem<double>& system,
                                 const elimination::PivotRule& r, t800::Precision precision,
                                 bool overlap = false, bool buffered = false) {
-  const network::Topology topology = network::load_topology(std::string(T800SIM_SOURCE_DIR) + "/" +
-                                                            workloads::elimination_topology(m));
+  const network::Topology topology =
+      network::load_topology(test_paths::source_dir() + "/" + workloads::elimination_topology(m));
   network::MachineOptions options;
   options.precision = precision;
   network::Machine machine(topology, options);

@@ -9,6 +9,7 @@
 #include "network/topology_file.hpp"
 #include "tests/elimination/elimination_fixtures.hpp"
 #include "tests/elimination/pipeline_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "workloads/pipeline/pipeline.hpp"
 
 namespace {
@@ -140,8 +141,8 @@ INSTANTIATE_TEST_SUITE_P(Topologies, PipelineM, ::testing::Values(1, 2, 3, 4, 5)
                          [](const auto& info) { return "m" + std::to_string(info.param); });
 
 TEST(Pipeline, RejectsATopologyWithTooFewLevelTwoProcessors) {
-  const network::Topology topology = network::load_topology(std::string(T800SIM_SOURCE_DIR) + "/" +
-                                                            workloads::elimination_topology(2));
+  const network::Topology topology =
+      network::load_topology(test_paths::source_dir() + "/" + workloads::elimination_topology(2));
   workloads::PipelineSettings settings;
   settings.m = 3;
   try {

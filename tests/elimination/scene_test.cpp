@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tests/cli/cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 #include "workloads/pipeline/pipeline.hpp"
@@ -18,7 +19,7 @@ class Table6Scene : public ::testing::TestWithParam<int> {};
 TEST_P(Table6Scene, RunsTheMProcessorPipeline) {
   const int m = GetParam();
   const tools::Scene scene =
-      tools::load_scene(std::string(T800SIM_SOURCE_DIR) + "/" + workloads::kEliminationScene,
+      tools::load_scene(test_paths::source_dir() + "/" + workloads::kEliminationScene,
                         workloads::table6_overrides(m));
   EXPECT_EQ(scene.topology.name, "elimination-m" + std::to_string(m));
   const workloads::RunReport report = workloads::run(tools::inputs_from(scene));
@@ -64,8 +65,8 @@ class OneUnknown : public ::testing::TestWithParam<std::string> {};
 TEST_P(OneUnknown, IsSolved) {
   std::vector<std::string> overrides = {"workload.source=random", "workload.n=1"};
   if (!GetParam().empty()) overrides.push_back(GetParam());
-  const tools::Scene scene = tools::load_scene(
-      std::string(T800SIM_SOURCE_DIR) + "/" + workloads::kEliminationScene, overrides);
+  const tools::Scene scene =
+      tools::load_scene(test_paths::source_dir() + "/" + workloads::kEliminationScene, overrides);
   const workloads::RunReport report = workloads::run(tools::inputs_from(scene));
   ASSERT_TRUE(report.blocked.empty());
   const workloads::ResultValue& w = report.workload;

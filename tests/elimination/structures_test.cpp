@@ -15,6 +15,7 @@
 #include "network/topology_file.hpp"
 #include "tests/elimination/elimination_fixtures.hpp"
 #include "tests/elimination/pipeline_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "tools/run_inputs.hpp"
 #include "tools/scene.hpp"
 #include "workloads/pipeline/pipeline.hpp"
@@ -128,7 +129,7 @@ class Table6Structure : public ::testing::TestWithParam<std::tuple<Structure, in
 TEST_P(Table6Structure, Figures) {
   const auto& [structure, m] = GetParam();
   const tools::Scene scene =
-      tools::load_scene(std::string(T800SIM_SOURCE_DIR) + "/" + workloads::kEliminationScene,
+      tools::load_scene(test_paths::source_dir() + "/" + workloads::kEliminationScene,
                         workloads::table6_overrides(m));
   const workloads::RunInputs in = tools::inputs_from(scene);
   const workloads::WorkloadContext context{in.params, in.topology, in.robot.get()};

@@ -14,6 +14,7 @@
 
 #include "../cli/cli_fixtures.hpp"
 #include "programs/raytrace/scene.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -173,8 +174,8 @@ TEST(RaytraceFarm, PrecisionIsStatedAndUsed) {
 TEST(RaytraceFarm, ANetworkWithoutAWorkerIsAnErrorNamingTheNetwork) {
   const std::string path = testing::TempDir() + "raytrace-single.toml";
   std::ofstream(path)
-      << "[network]\ntopology = \"" T800SIM_SOURCE_DIR
-         "/configs/topologies/single.toml\"\n[workload]\nkind = \"raytrace-farm\"\n";
+      << std::string("[network]\ntopology = \"") + test_paths::source_dir() +
+             "/configs/topologies/single.toml\"\n[workload]\nkind = \"raytrace-farm\"\n";
   const auto o = cli_test::run("run " + path + " 2>&1");
   EXPECT_EQ(o.exit_code, 2) << o.out;
   EXPECT_NE(

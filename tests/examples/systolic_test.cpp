@@ -14,6 +14,7 @@
 
 #include "../cli/cli_fixtures.hpp"
 #include "programs/systolic/block_product.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -75,7 +76,7 @@ TEST(SystolicMatmul, OverlapHidesTheLinksAndTheBoundsHold) {
 // loop's float, read back exactly.
 TEST(SystolicMatmul, TheCsvHoldsC) {
   const std::size_t n = 32;
-  const std::string path = std::string(T800SIM_BINARY_DIR) + "/systolic-c.csv";
+  const std::string path = test_paths::binary_dir() + "/systolic-c.csv";
   std::remove(path.c_str());
   product(" --set workload.output_csv=" + path);
   std::ifstream csv(path);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "network/families.hpp"
+#include "tests/test_paths.hpp"
 #include "tools/robot_file.hpp"
 #include "workloads/params.hpp"
 #include "workloads/registry.hpp"
@@ -15,7 +16,7 @@ namespace farm_test {
 
 inline std::shared_ptr<const dynamics::RobotModel> stanford() {
   return std::make_shared<const dynamics::RobotModel>(
-      tools::load_robot(T800SIM_SOURCE_DIR "/configs/robots/stanford.toml"));
+      tools::load_robot(test_paths::source_dir() + "/configs/robots/stanford.toml"));
 }
 
 // The catalogue's defaults for the farm, with the given settings.

@@ -10,14 +10,15 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+#include "tests/test_paths.hpp"
 
 namespace {
 
 nlohmann::json run_farm(const std::string& overrides, bool skip) {
-  const std::string command = "cd " T800SIM_SOURCE_DIR " && SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " +
-                              std::string(T800SIM_BINARY_DIR) +
-                              "/t800sim run configs/scenes/dynamics-farm.toml --json " + overrides +
-                              " --set fidelity.skip_numerics=" + (skip ? "true" : "false");
+  const std::string command =
+      std::string("cd ") + test_paths::source_dir() + " && SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " +
+      test_paths::binary_dir() + "/t800sim run configs/scenes/dynamics-farm.toml --json " +
+      overrides + " --set fidelity.skip_numerics=" + (skip ? "true" : "false");
   FILE* pipe = popen(command.c_str(), "r");
   std::string out;
   char buffer[4096];

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../cli/cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -185,13 +186,13 @@ TEST(Faults, TheExampleScenesRecover) {
 
 std::string scene_with(const std::string& name, const std::string& fault) {
   const std::filesystem::path dir =
-      std::filesystem::path(T800SIM_BINARY_DIR) / "test-output" / "faults";
+      std::filesystem::path(test_paths::binary_dir()) / "test-output" / "faults";
   std::filesystem::create_directories(dir);
-  std::ifstream in(std::string(T800SIM_SOURCE_DIR) + "/configs/scenes/elimination.toml");
+  std::ifstream in(test_paths::source_dir() + "/configs/scenes/elimination.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   // Relative paths in the scene are relative to its file: keep them working from the copy.
   for (const std::string from : {"\"../topologies/", "\"../robots/", "\"../calibration"}) {
-    const std::string to = "\"" + std::string(T800SIM_SOURCE_DIR) + "/configs/" + from.substr(4);
+    const std::string to = "\"" + test_paths::source_dir() + "/configs/" + from.substr(4);
     for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at))
       text.replace(at, from.size(), to), at += to.size();
   }
@@ -243,7 +244,7 @@ TEST(FaultSettings, ABadFaultFlagNamesTheFlag) {
 // sweep passes --fault to every point, and checks it before starting.
 TEST(FaultSettings, ASweepInjectsTheFaultIntoEveryPoint) {
   const std::filesystem::path dir =
-      std::filesystem::path(T800SIM_BINARY_DIR) / "test-output" / "faults-sweep";
+      std::filesystem::path(test_paths::binary_dir()) / "test-output" / "faults-sweep";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string csv = (dir / "r.csv").string();

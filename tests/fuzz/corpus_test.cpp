@@ -9,6 +9,7 @@
 
 #include "fuzz/harness.hpp"
 #include "fuzz/iss_harness.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -17,7 +18,7 @@ namespace fs = std::filesystem;
 std::vector<fs::path> corpus(const std::string& target) {
   std::vector<fs::path> files;
   for (const auto& entry :
-       fs::directory_iterator(fs::path(T800SIM_SOURCE_DIR) / "fuzz" / "corpus" / target))
+       fs::directory_iterator(fs::path(test_paths::source_dir()) / "fuzz" / "corpus" / target))
     if (entry.is_regular_file()) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;

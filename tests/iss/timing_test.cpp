@@ -87,4 +87,30 @@ TEST(IssTiming, ExternalMemoryCostsItsAccessCycles) {
   EXPECT_EQ(cycles(0x80010000u, 2) - on_chip, 3 + 2 - 1);
 }
 
+// Code in external memory is fetched a word at a time, one word ahead (docs/t800-timing.md, 5): a
+// jump empties the prefetch buffer, and the target's code is fetched from the target. How far the
+// jump goes does not matter: the words it jumps over are never fetched.
+std::int64_t cycles_of_forward_jump(int padding) {
+  TestMachine m(t800::ProcessorType::T800_20, 2 << 20);
+  // The jump and its target both in external memory (past the 4 KB on chip), each word-aligned.
+  m.boot(
+      "        ajw 16\n        j far\n        .space 8192\n        .align 4\n"
+      "far:    j target\n        .space " +
+      std::to_string(padding) + "\n        .align 4\ntarget: stopp\n");
+  EXPECT_EQ(m.run(), StopReason::idle);
+  return m.core.cycle();
+}
+
+TEST(IssTiming, AForwardJumpInExternalMemoryCostsWhatAJumpCosts) {
+  // Both jumps are five bytes (pfix pfix pfix pfix j: the offsets need five nibbles), so they
+  // differ in nothing but distance.
+  const std::int64_t over_64k = cycles_of_forward_jump(64 << 10);
+  EXPECT_EQ(over_64k, cycles_of_forward_jump(960 << 10));
+  // Against a jump over 16 bytes (pfix j, two bytes, one word): three more prefix cycles and at
+  // most one more code word (3 cycles), not the 16,384 words in between (some 49,000 cycles).
+  const std::int64_t over_16 = cycles_of_forward_jump(16);
+  EXPECT_GE(over_64k, over_16 + 3);
+  EXPECT_LE(over_64k, over_16 + 3 + 3);
+}
+
 }  // namespace

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "network/config_error.hpp"
+#include "tests/test_paths.hpp"
 
 namespace nettest {
 
@@ -31,7 +32,7 @@ inline std::string write_file(const std::string& name, const std::string& text) 
 }
 
 inline std::string source_dir() {
-  return T800SIM_SOURCE_DIR;
+  return test_paths::source_dir();
 }
 
 // Runs f and checks that it throws a ConfigError at (file, line, column) whose message contains

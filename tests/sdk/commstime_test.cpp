@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../cli/cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -22,9 +23,9 @@ constexpr int kCommunication = kFirstParty + kSecondParty;
 constexpr int kJump = 4, kAdc = 1, kLend = 10, kStartp = 12, kEndp = 13;
 
 nlohmann::json run_commstime(const std::string& scene, const std::string& settings) {
-  const auto o =
-      cli_test::run("run examples/commstime/" + scene + " --json --set workload.plugin=" +
-                    T800SIM_TEST_PLUGIN_DIR "/commstime.so " + settings);  // stdout only: the JSON
+  const auto o = cli_test::run("run examples/commstime/" + scene +
+                               " --json --set workload.plugin=" + test_paths::plugin_dir() +
+                               "/commstime.so " + settings);  // stdout only: the JSON
   EXPECT_EQ(o.exit_code, 0) << o.out;
   return nlohmann::json::parse(o.out)["workload"];
 }

@@ -9,6 +9,7 @@
 #include "network/topology_file.hpp"
 #include "sdk_fixtures.hpp"
 #include "t800sim/pipeline.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -40,7 +41,7 @@ struct Loop {
 
 network::Topology loop_network(const Loop& s) {
   if (!s.relayed) return sdk_test::chain(2 + s.members);
-  return network::load_topology(std::string(T800SIM_SOURCE_DIR) +
+  return network::load_topology(test_paths::source_dir() +
                                 "/configs/topologies/elimination-m4.toml");
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include "tests/test_paths.hpp"
 
 namespace plugin_test {
 
@@ -27,11 +28,13 @@ struct PluginScene {
     fs::remove_all(dir);
     fs::create_directories(dir / "plugins");
     if (!variant.empty())
-      fs::copy_file(fs::path(T800SIM_TEST_PLUGIN_DIR) / (variant + ".so"),
+      fs::copy_file(fs::path(test_paths::plugin_dir()) / (variant + ".so"),
                     dir / "plugins" / (variant + ".so"));
     file = dir / "scene.toml";
-    std::ofstream(file) << "[network]\n"
-                           "topology = \"" T800SIM_SOURCE_DIR "/configs/topologies/"
+    std::ofstream(file) << std::string(
+                               "[network]\n"
+                               "topology = \"") +
+                               test_paths::source_dir() + "/configs/topologies/"
                         << topology
                         << ".toml\"\n"
                            "processor = \"T800-20\"\n"

@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "tests/test_paths.hpp"
 #include "tools/robot_file.hpp"
 #include "workloads/dynamics/assembly.hpp"
 #include "workloads/dynamics/state.hpp"
@@ -19,7 +20,7 @@ using integration::Method;
 
 const dynamics::RobotModel& stanford() {
   static const dynamics::RobotModel model =
-      tools::load_robot(std::string(T800SIM_SOURCE_DIR) + "/configs/robots/stanford.toml");
+      tools::load_robot(test_paths::source_dir() + "/configs/robots/stanford.toml");
   return model;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -16,9 +17,9 @@ struct Output {
 };
 
 Output run(const std::string& args) {
-  const std::string command = "cd " T800SIM_SOURCE_DIR
+  const std::string command = std::string("cd ") + test_paths::source_dir() +
                               " && SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 timeout 120 " +
-                              std::string(T800SIM_BINARY_DIR) + "/t800sim " + args;
+                              test_paths::binary_dir() + "/t800sim " + args;
   Output o;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return o;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "sweep_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 using sweep_test::fresh_dir;
 using sweep_test::read_file;
@@ -11,8 +12,8 @@ using sweep_test::read_file;
 namespace {
 
 cli_test::Output plot(const std::string& args) {
-  const std::string command =
-      "cd " T800SIM_SOURCE_DIR " && timeout 120 tools/plot " + args + " 2>&1";
+  const std::string command = std::string("cd ") + test_paths::source_dir() +
+                              " && timeout 120 tools/plot " + args + " 2>&1";
   cli_test::Output o;
   FILE* pipe = popen(command.c_str(), "r");
   char buffer[4096];

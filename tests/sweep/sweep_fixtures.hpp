@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../cli/cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "tools/sweep_csv.hpp"
 
 namespace sweep_test {
@@ -17,8 +18,8 @@ namespace sweep_test {
 // An empty directory for one test's files (under the build tree, so nothing escapes it).
 inline std::string fresh_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir = std::filesystem::path(T800SIM_BINARY_DIR) / "test-output" /
-                                    info->test_suite_name() / info->name();
+  const std::filesystem::path dir = std::filesystem::path(test_paths::binary_dir()) /
+                                    "test-output" / info->test_suite_name() / info->name();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
@@ -46,7 +47,8 @@ inline std::vector<std::string> lines(const std::string& text) {
 // The table as rows of fields (header first).
 inline std::vector<std::vector<std::string>> table(const std::string& path) {
   std::vector<std::vector<std::string>> rows;
-  for (const std::string& line : lines(read_file(path))) rows.push_back(tools::parse_csv_line(line));
+  for (const std::string& line : lines(read_file(path)))
+    rows.push_back(tools::parse_csv_line(line));
   return rows;
 }
 

@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "sweep_fixtures.hpp"
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -33,11 +34,12 @@ std::size_t rows_with_status_ok(const std::string& path) {
 TEST(SweepShare, TwoSweepsOnOneTableKeepEveryRow) {
   const std::string dir = fresh_dir(), out = dir + "/r.csv";
   const std::string sweep = "sweep configs/scenes/pingpong.toml --set workload.iterations=2 -j 1 ";
-  const std::string t800sim = std::string(T800SIM_BINARY_DIR) + "/t800sim ";
-  const std::string both =
-      "cd " T800SIM_SOURCE_DIR " && SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 sh -c '" + t800sim + sweep +
-      "--vary workload.bytes=1..6 -o " + out + " 2>" + dir + "/a.err & a=$!; " + t800sim + sweep +
-      "--vary workload.bytes=7..12 -o " + out + " 2>" + dir + "/b.err; b=$?; wait $a && exit $b'";
+  const std::string t800sim = test_paths::binary_dir() + "/t800sim ";
+  const std::string both = std::string("cd ") + test_paths::source_dir() +
+                           " && SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 sh -c '" + t800sim + sweep +
+                           "--vary workload.bytes=1..6 -o " + out + " 2>" + dir +
+                           "/a.err & a=$!; " + t800sim + sweep + "--vary workload.bytes=7..12 -o " +
+                           out + " 2>" + dir + "/b.err; b=$?; wait $a && exit $b'";
   const int status = std::system(both.c_str());
   const cli_test::Output o{WIFEXITED(status) ? WEXITSTATUS(status) : -1, both};
   ASSERT_EQ(o.exit_code, 0) << o.out;

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../cli/cli_fixtures.hpp"
+#include "tests/test_paths.hpp"
 #include "tools/trace_format.hpp"
 #include "tools/trace_vcd.hpp"
 
@@ -105,7 +106,7 @@ std::map<std::string, Timeline> vcd_timelines(const std::string& path) {
 class Traces : public ::testing::Test {
  protected:
   void run(const std::string& scene_and_sets) {
-    dir_ = std::filesystem::path(T800SIM_BINARY_DIR) / "test-output" / "Traces" /
+    dir_ = std::filesystem::path(test_paths::binary_dir()) / "test-output" / "Traces" /
            ::testing::UnitTest::GetInstance()->current_test_info()->name();
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
@@ -222,7 +223,7 @@ TEST_F(Traces, DynamicsFarmTracesAgreeAndNameSubtasks) {
 }
 
 TEST_F(Traces, AreWrittenForADeadlockedOrFailedRunOnlyWhenTheRunHappened) {
-  dir_ = std::filesystem::path(T800SIM_BINARY_DIR) / "test-output" / "Traces" / "bad";
+  dir_ = std::filesystem::path(test_paths::binary_dir()) / "test-output" / "Traces" / "bad";
   std::filesystem::create_directories(dir_);
   const auto o =
       cli_test::run("run configs/scenes/pingpong.toml --trace-csv /no/such/dir/t.csv 2>&1");
@@ -231,7 +232,7 @@ TEST_F(Traces, AreWrittenForADeadlockedOrFailedRunOnlyWhenTheRunHappened) {
 }
 
 TEST(VcdCommand, BadTraceFilesAreClearErrors) {
-  const auto dir = std::filesystem::path(T800SIM_BINARY_DIR) / "test-output" / "VcdCommand";
+  const auto dir = std::filesystem::path(test_paths::binary_dir()) / "test-output" / "VcdCommand";
   std::filesystem::create_directories(dir);
   const std::string bad = (dir / "bad.csv").string();
   std::ofstream(bad) << "kind,name,state,start_us,end_us,label\nprocessor,P0,compute,5,2,\n";

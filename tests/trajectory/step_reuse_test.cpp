@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include "tests/test_paths.hpp"
 
 namespace {
 
@@ -49,9 +50,9 @@ Outcome run(const std::vector<std::string>& overrides, bool reuse, bool trace = 
   std::string name = info->name();
   std::replace(name.begin(), name.end(), '/', '-');  // parameterised tests: Case/Param
   const std::string base =
-      std::string(T800SIM_BINARY_DIR) + "/step-reuse-" + name + (reuse ? "-on" : "-off");
-  std::string command = "cd " T800SIM_SOURCE_DIR " && SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " +
-                        std::string(T800SIM_BINARY_DIR) +
+      test_paths::binary_dir() + "/step-reuse-" + name + (reuse ? "-on" : "-off");
+  std::string command = std::string("cd ") + test_paths::source_dir() +
+                        " && SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " + test_paths::binary_dir() +
                         "/t800sim run configs/scenes/trajectory.toml --json --set "
                         "fidelity.reuse_steps=" +
                         (reuse ? "true" : "false") + " --set workload.output_csv=" + base + ".csv";

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "tests/test_paths.hpp"
 #include "tools/table_files.hpp"
 
 namespace {
@@ -28,7 +29,7 @@ workloads::RunReport report_with(const std::vector<std::vector<double>>& rows) {
 
 TEST(TableFiles, NumbersReadBackExactly) {
   const std::vector<std::vector<double>> rows{{0.1, 1.0 / 3.0}, {1e-300, -2.5e17}};
-  const std::string path = std::string(T800SIM_BINARY_DIR) + "/table-files-test.csv";
+  const std::string path = test_paths::binary_dir() + "/table-files-test.csv";
   workloads::Params params;
   params.set("output_csv", path);
   tools::write_tables(report_with(rows), params);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "network/topology_file.hpp"
+#include "tests/test_paths.hpp"
 #include "tools/robot_file.hpp"
 #include "workloads/dynamics/subtask_set.hpp"
 #include "workloads/elimination/system.hpp"
@@ -21,7 +22,7 @@ namespace trajectory_test {
 
 inline std::shared_ptr<const dynamics::RobotModel> stanford() {
   return std::make_shared<const dynamics::RobotModel>(
-      tools::load_robot(T800SIM_SOURCE_DIR "/configs/robots/stanford.toml"));
+      tools::load_robot(test_paths::source_dir() + "/configs/robots/stanford.toml"));
 }
 
 // The catalogue's defaults for the trajectory.
@@ -36,7 +37,7 @@ inline workloads::RunInputs inputs(const workloads::Params& params) {
   workloads::RunInputs in;
   in.name = "trajectory-test";
   in.topology =
-      network::load_topology(T800SIM_SOURCE_DIR "/configs/topologies/trajectory-9-m3.toml");
+      network::load_topology(test_paths::source_dir() + "/configs/topologies/trajectory-9-m3.toml");
   in.options.precision = *t800::parse_precision(params.text("precision"));
   in.kind = "trajectory";
   in.params = params;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "tests/test_paths.hpp"
 #include "trajectory_fixtures.hpp"
 #include "workloads/integration/trajectory.hpp"
 #include "workloads/run/workload.hpp"
@@ -74,7 +75,7 @@ TEST(Trajectory, SemiImplicitEulerReal64WithPdEqualsTheRolloutBitForBit) {
 }
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = std::string(T800SIM_BINARY_DIR) + "/" + name;
+  const std::string path = test_paths::binary_dir() + "/" + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -220,9 +221,10 @@ namespace {
 // The farm runs on exactly the paper's tree: every link of tree-9 is in the trajectory topology,
 // between the same processors on the same link numbers, and the host on P0.link0.
 TEST(TrajectoryTopology, KeepsTheFarmTreeExactlyAsTree9) {
-  const auto tree = network::load_topology(T800SIM_SOURCE_DIR "/configs/topologies/tree-9.toml");
+  const auto tree =
+      network::load_topology(test_paths::source_dir() + "/configs/topologies/tree-9.toml");
   const auto both =
-      network::load_topology(T800SIM_SOURCE_DIR "/configs/topologies/trajectory-9-m3.toml");
+      network::load_topology(test_paths::source_dir() + "/configs/topologies/trajectory-9-m3.toml");
   for (int p = 0; p < int(tree.processors.size()); ++p) {
     const int q = both.find(tree.processors[std::size_t(p)].name);
     ASSERT_GE(q, 0);

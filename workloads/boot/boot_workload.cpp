@@ -146,7 +146,7 @@ class BootWorkload : public Workload {
       v.set("exit_status", std::int64_t(*s.exit_status));
       v.set("exit_code", s.exit_code);
     }
-    v.set("ended", s.over() ? s.why() : std::string("nothing left to run"));
+    v.set("ended", ended(machine));
     v.set("instructions", s.instructions());
     const double us = machine.simulated_us();
     v.set("host_requests", host_->requests());
@@ -171,6 +171,7 @@ class BootWorkload : public Workload {
       p.set("cycles", a.cycles);
       p.set("synchronisations", a.synchronisations);
       p.set("dma_stall_cycles", a.dma_stall_cycles);
+      p.set("state", nodes_[std::size_t(&a - s.accounts().data())]->state());
       if (a.halt) {
         p.set("halt", halt_value(*a.halt));
         if (failure.empty()) failure = a.name + " halted: " + a.halt->reason;
@@ -189,8 +190,19 @@ class BootWorkload : public Workload {
   }
 
   const boot::BootSession& session() const { return *session_; }
+  bool reports_when_stopped() const override { return true; }
 
  private:
+  // How the run ended: the program's exit, a limit, a halt, or every process finished.
+  std::string ended(const network::Machine& machine) const {
+    if (session_->over()) return session_->why();
+    if (machine.limit_reached() != network::Limit::none)
+      return std::string("stopped: ") + network::to_string(machine.limit_reached());
+    for (const boot::ProcessorAccount& a : session_->accounts())
+      if (a.halt) return a.name + " halted: " + a.halt->reason;
+    return "nothing left to run";
+  }
+
   std::string path_;
   Bytes boot_file_;
   boot::IssNodeOptions options_;

@@ -32,14 +32,19 @@ IssNode::IssNode(network::Machine& machine, int node, BootSession& session,
       session_(session),
       options_(options),
       core_(core_config(machine, node, options)),
-      cycle_ns_(core_.processor().cycle_ns) {
+      cycle_ns_(core_.processor().cycle_ns),
+      tick_cycles_(sc_core::sc_get_time_resolution().to_seconds() * 1e9 / cycle_ns_) {
   core_.set_link_engine(this);
   session_.account(node).name = machine.node_name(node);
 }
 
+// The first cycle boundary at or after now. A cycle's time is rounded to the kernel's resolution
+// (1 ps: a T805-30's 33.33 ns cycle is not a whole number of them), so a time within one tick
+// after a boundary is that boundary, not the next: else the core would be a cycle behind the
+// clock it has just waited for.
 std::int64_t IssNode::now_cycle() const {
   const double ns = t800::sim_now().to_seconds() * 1e9;
-  return std::int64_t(std::ceil(ns / cycle_ns_ - 1e-9));
+  return std::int64_t(std::ceil(ns / cycle_ns_ - tick_cycles_));
 }
 
 sc_core::sc_time IssNode::time_of(std::int64_t cycle) const {
@@ -66,6 +71,38 @@ std::string IssNode::describe_waiting() const {
     }
   }
   return text;
+}
+
+std::string IssNode::describe_links() const {
+  std::string text;
+  for (int l = 0; l < 4; ++l) {
+    std::string what;
+    if (output_busy_[l]) what = "output in flight";
+    if (input_busy_[l]) {
+      if (!what.empty()) what += ", ";
+      what += ports_[l] ? fmt::format("input, {} of {} bytes come", ports_[l]->buffered(),
+                                      ports_[l]->input_wanted())
+                        : std::string("input");
+    }
+    if (watching_[l]) what += what.empty() ? "ALT guard watching" : ", ALT guard watching";
+    if (what.empty()) continue;
+    text += fmt::format("{}link {}: {}{}", text.empty() ? "" : "; ", l, what,
+                        ports_[l] ? "" : " (connected to nothing)");
+  }
+  return text;
+}
+
+std::string IssNode::state() const {
+  std::string text;
+  if (const auto& h = core_.halt_report())
+    text = fmt::format("halted at Iptr #{:08X}: {}", h->iptr, h->reason);
+  else if (!core_.idle())
+    text = fmt::format("running at Iptr #{:08X}, Wdesc #{:08X}", core_.registers().iptr,
+                       core_.registers().wdesc());
+  else
+    text = describe_waiting();
+  const std::string links = describe_links();
+  return links.empty() ? text : text + "; links in flight: " + links;
 }
 
 bool IssNode::outstanding() const {
@@ -293,22 +330,31 @@ void IssNode::execute(network::Process& p) {
       std::max<std::int64_t>(1, std::int64_t(options_.slice_us * 1000 / cycle_ns_));
   bool busy = false;
   for (;;) {
-    if (session_.over()) break;
+    if (session_.over() || machine_.stopping()) break;
     deliver_link_events();
     if (!busy && !core_.idle()) {
       activity.set_cpu(t800::ProcessorState::compute, {}, t800::sim_now());
       busy = true;
     }
+    // At least a cycle ahead: with something else due within the cycle (another core's
+    // notification, at no time at all) a bound of no cycles would run nothing, and two cores
+    // would hand each other zero waits for ever. An event within the cycle is seen at the next
+    // cycle's instruction boundary, as the chip sees it.
     std::int64_t bound = now_cycle() + slice;
     if (outstanding()) {
       const sc_core::sc_time ahead = sc_core::sc_time_to_pending_activity();
       const double cycles = ahead.to_seconds() * 1e9 / cycle_ns_;
-      if (cycles < double(slice)) bound = now_cycle() + std::int64_t(cycles);
+      if (cycles < double(slice)) bound = now_cycle() + std::max<std::int64_t>(1, cycles);
     }
+    // Not past the run's simulated-time limit: what a stopped run reports ran before it.
+    if (const double limit_s = machine_.options().max_sim_s; limit_s > 0)
+      bound = std::min(
+          bound, std::max<std::int64_t>(now_cycle() + 1, std::int64_t(limit_s * 1e9 / cycle_ns_)));
     std::int64_t budget = kNever / 2;
     if (options_.max_instructions > 0) budget = options_.max_instructions - core_.instructions();
     const StopReason why = core_.run(bound, budget);
     ++a.synchronisations;
+    machine_.heartbeat();
     charge_dma();
     account();
     switch (why) {
@@ -317,12 +363,8 @@ void IssNode::execute(network::Process& p) {
         start_requested_transfers();
         break;
       case StopReason::running:
-        if (core_.cycle() > now_cycle())
-          wait_until_cycle(core_.cycle());
-        else  // held back by an activity due within the cycle: it happens first (a delta wait
-              // alone would never let the time reach it)
-          sc_core::wait(std::min(sc_core::sc_time_to_pending_activity(),
-                                 time_of(now_cycle() + 1) - t800::sim_now()));
+        // Never a wait of no time: the next cycle at the least, so simulated time advances.
+        wait_until_cycle(std::max(core_.cycle(), now_cycle() + 1));
         break;
       case StopReason::limit:
         wait_until_cycle(core_.cycle());

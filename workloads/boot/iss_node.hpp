@@ -46,6 +46,9 @@ class IssNode : public t800::iss::LinkEngine {
   void reset(int link, bool output) override;
 
   const t800::iss::Core& core() const { return core_; }
+  // What the processor is doing now, for a run stopped before its end: running (at which Iptr),
+  // halted, or its waiting processes; and the link transfers in flight.
+  std::string state() const;
 
  private:
   struct LinkEvent {
@@ -73,6 +76,7 @@ class IssNode : public t800::iss::LinkEngine {
   IssNodeOptions options_;
   t800::iss::Core core_;
   double cycle_ns_;
+  double tick_cycles_;  // the kernel's time resolution, in cycles
   std::array<std::unique_ptr<LinkPort>, 4> ports_;
   std::vector<LinkEvent> inbox_;
   sc_core::sc_event inbox_event_;
@@ -81,6 +85,7 @@ class IssNode : public t800::iss::LinkEngine {
   std::array<bool, 4> output_busy_{}, input_busy_{}, watching_{};
   bool outstanding() const;
   std::string describe_waiting() const;
+  std::string describe_links() const;
   std::int64_t dma_seen_ = 0;
 };
 

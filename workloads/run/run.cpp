@@ -224,6 +224,8 @@ RunReport simulate(const RunInputs& in, Realised& realised) {
   }
   report.wait_cycle = machine.wait_cycle();
   report.limit = machine.limit_reached();
+  report.stop_signal = machine.stop_signal();
+  report.running_at_stop = machine.running_at_stop();
   report.trace_forecast = machine.trace_forecast();
   report.simulated_us = machine.simulated_us();
   report.events = machine.events();
@@ -239,6 +241,8 @@ RunReport simulate(const RunInputs& in, Realised& realised) {
       report.tables = workload->tables();
       report.failure = failure_of(report.workload);
     }
+  } else if (report.limit != network::Limit::none && workload->reports_when_stopped()) {
+    report.workload = workload->results(machine);
   }
   return report;
 }
@@ -321,7 +325,19 @@ ResultValue RunReport::to_value() const {
     for (const network::FaultRecord& f : faults) list.push(fault_value(f));
     v.set("faults", std::move(list));
   }
-  if (limit != network::Limit::none) v.set("stopped_by", network::to_string(limit));
+  if (limit != network::Limit::none) {
+    v.set("stopped_by", network::to_string(limit));
+    if (stop_signal) v.set("stop_signal", std::int64_t(stop_signal));
+    ResultValue list = ResultValue::list();
+    for (const auto& p : running_at_stop) {
+      ResultValue r;
+      r.set("process", p.process);
+      r.set("processor", p.processor);
+      r.set("status", p.status);
+      list.push(std::move(r));
+    }
+    v.set("running_at_stop", std::move(list));
+  }
   if (!blocked.empty()) {
     ResultValue b = ResultValue::list();
     for (const auto& p : blocked) {

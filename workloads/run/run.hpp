@@ -87,7 +87,10 @@ struct RunReport {
   std::vector<network::BlockedProcess> blocked;  // non-empty: the program deadlocked
   std::vector<std::string> wait_cycle;           // the deadlock's cycle of waits, when there is one
   network::Limit limit = network::Limit::none;   // a limit stopped the run: no workload results
-  network::TraceForecast trace_forecast{-1, 0, 0};  // with a trace, once progress gave one
+                                                 // (unless Workload::reports_when_stopped)
+  int stop_signal = 0;                           // Limit::interrupted: the signal
+  std::vector<network::BlockedProcess> running_at_stop;  // after a limit: what had not ended
+  network::TraceForecast trace_forecast{-1, 0, 0};       // with a trace, once progress gave one
   // Non-empty: the run ended but its results are not results: the workload reported a failure (a
   // solve without a usable pivot) or a number came out NaN or infinite (REAL32 overflow). Says
   // which.
