@@ -29,7 +29,8 @@ const char* to_string(ProcessorState state) {
 
 ProcessorState ProcessorActivity::state() const {
   if (cpu_ == ProcessorState::compute) return ProcessorState::compute;
-  if (cpu_ == ProcessorState::communicate || transfers_ > 0) return ProcessorState::communicate;
+  if (cpu_ == ProcessorState::communicate || (transfers_busy_ && transfers_ > 0))
+    return ProcessorState::communicate;
   return ProcessorState::idle;
 }
 

@@ -30,6 +30,11 @@ class ProcessorActivity {
   void transfer_begin();
   void transfer_end();
   void keep_intervals(bool keep) { keep_intervals_ = keep; }
+  // Whether a link transfer at this processor makes it busy (communicate), as the paper counts a
+  // processor whose link engines work for it. A processor that executes real machine code is busy
+  // only while its CPU executes: its link engines run beside it, and a process waiting for one
+  // leaves the CPU idle (workloads/boot/iss_node.cpp).
+  void count_transfers_as_busy(bool count) { transfers_busy_ = count; }
   void close(
       const sc_core::sc_time& end);  // settles the running state at the end of the simulation
   // Neither its CPU nor any of its link engines is working for it at this instant.
@@ -60,6 +65,7 @@ class ProcessorActivity {
   double us(const sc_core::sc_time& t);
   ProcessorState cpu_ = ProcessorState::idle;
   int transfers_ = 0;
+  bool transfers_busy_ = true;
   ProcessorState current_ = ProcessorState::idle;
   // The current interval's label is `label_` while `labelled_`, else empty: a CPU alternates
   // between a block's label and none (idle between two blocks), so the string is only copied when

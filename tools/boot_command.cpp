@@ -35,9 +35,12 @@ struct BootArgs {
   bool allow_system = false;
   bool strict = false;
   std::string json;
+  std::string profile;
   TraceFiles traces;
   double max_simulated_s = 0, max_host_s = 0;
   std::int64_t max_instructions = 0;
+  std::string clock = "simulated";
+  std::int64_t clock_start = -1;
   std::vector<std::string> program_args;
 };
 
@@ -83,9 +86,13 @@ Scene boot_scene(const BootArgs& args) {
   scene.workload.set("memory", args.memory);
   scene.workload.set("addressing", std::string(args.strict ? "strict" : "wrap"));
   scene.workload.set("max_instructions", args.max_instructions);
+  scene.workload.set("profile", args.profile);
+  scene.workload.set("clock", args.clock);
+  scene.workload.set("clock_start", args.clock_start);
   // The flags' values against the kind's declared ranges, as a scene's are (tools/scene.cpp).
   for (const auto& [name, flag] :
-       {std::pair{"memory", "--memory"}, std::pair{"max_instructions", "--max-instructions"}}) {
+       {std::pair{"memory", "--memory"}, std::pair{"max_instructions", "--max-instructions"},
+        std::pair{"clock_start", "--clock-start"}}) {
     const workloads::ParamSpec* spec = info->find(name);
     const double value = double(scene.workload.integer(name));
     if ((spec->min && value < *spec->min) || (spec->max && value > *spec->max))
@@ -97,6 +104,8 @@ Scene boot_scene(const BootArgs& args) {
   scene.origins["workload.host_dir"] = {"--host-dir", 0, 0};
   scene.origins["workload.memory"] = {"--memory", 0, 0};
   scene.origins["workload.max_instructions"] = {"--max-instructions", 0, 0};
+  scene.origins["workload.clock_start"] = {"--clock-start", 0, 0};
+  scene.origins["workload.profile"] = {"--profile", 0, 0};
   scene.origins["network"] = {args.network.empty() ? "--processor" : args.network, 0, 0};
   return scene;
 }
@@ -162,6 +171,7 @@ int boot_file(const BootArgs& args) {
   if (!(args.max_host_s >= 0))
     throw std::invalid_argument("--max-host-s: give a number of seconds, 0 for no limit");
   if (!args.json.empty()) workloads::check_output_path(args.json, "--json");
+  if (!args.profile.empty()) workloads::check_output_path(args.profile, "--profile");
   check_trace_files(args.traces);
   const Scene scene = boot_scene(args);
   workloads::RunInputs inputs = inputs_from(scene);
@@ -228,6 +238,11 @@ void add_boot_command(CLI::App& app) {
                 "an access outside the installed memory halts the processor (default: wrap)");
   cmd->add_option("--json", args->json, "write the whole report as JSON to this file")
       ->type_name("REPORT");
+  cmd->add_option("--profile", args->profile,
+                  "write a profile as JSON to this file: per processor, each operation's count "
+                  "and cycles, the hottest code, time waiting per link and timer "
+                  "(tools/plot profile draws it)")
+      ->type_name("FILE");
   add_trace_options(*cmd, args->traces);
   cmd->add_option("--max-simulated-s", args->max_simulated_s,
                   "stop after this many seconds of simulated time (exit code 4; 0: no limit)")
@@ -235,6 +250,15 @@ void add_boot_command(CLI::App& app) {
   cmd->add_option("--max-host-s", args->max_host_s,
                   "stop after this many seconds of host (wall-clock) time (exit code 4; 0: no "
                   "limit)")
+      ->type_name("SECONDS");
+  cmd->add_option("--clock", args->clock,
+                  "what the program's SP.TIME tells: simulated (the default: --clock-start plus "
+                  "the simulated seconds) or host (the host's clock, as iserver gives it)")
+      ->check(CLI::IsMember({"simulated", "host"}))
+      ->type_name("simulated|host");
+  cmd->add_option("--clock-start", args->clock_start,
+                  "the simulated clock's start, seconds since 1970-01-01 UTC (default: the host's "
+                  "clock when the run starts); a fixed start makes SP.TIME reproducible")
       ->type_name("SECONDS");
   cmd->add_option("--max-instructions", args->max_instructions,
                   "stop when a processor has executed this many instructions (0: no limit)")

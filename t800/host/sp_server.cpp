@@ -17,12 +17,16 @@ namespace t800::host {
 
 namespace fs = std::filesystem;
 
-HostTime host_clock_now() {
-  const std::time_t utc = std::time(nullptr);
+HostTime host_time_at(std::int64_t utc_seconds) {
+  const std::time_t utc = static_cast<std::time_t>(utc_seconds);
   std::tm local{};
   localtime_r(&utc, &local);
   // iserver hostc.c SpTime (SUN): local = UTC + tm_gmtoff.
-  return HostTime{static_cast<std::int64_t>(utc) + local.tm_gmtoff, static_cast<std::int64_t>(utc)};
+  return HostTime{utc_seconds + local.tm_gmtoff, utc_seconds};
+}
+
+HostTime host_clock_now() {
+  return host_time_at(static_cast<std::int64_t>(std::time(nullptr)));
 }
 
 std::optional<std::string> host_getenv(const std::string& name) {

@@ -37,6 +37,9 @@ struct HostTime {
 
 // The host's clock now, as the iserver reads it (time() and the local zone's tm_gmtoff).
 HostTime host_clock_now();
+// The time `utc_seconds` (since 1970-01-01 UTC) as SP.TIME gives it: with the local zone's offset
+// at that instant, as host_clock_now applies it.
+HostTime host_time_at(std::int64_t utc_seconds);
 // The host environment's value of name, if it has one.
 std::optional<std::string> host_getenv(const std::string& name);
 // std::system, whose raw status the iserver returns.

@@ -93,7 +93,10 @@ void Core::step(const Decoded& d) {
   }
   stepping_ = false;
   ++instructions_;
+  const std::int64_t issued = stepper_.iu_free();
   stepper_.step(t);
+  if (profile_) [[unlikely]]
+    profile_->record(d.op, at, stepper_.iu_free() - issued);
   if (moved_) {
     moved_ = false;
     stepper_.restart_fetch();

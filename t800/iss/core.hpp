@@ -20,6 +20,7 @@
 #include "t800/iss/fpu.hpp"
 #include "t800/iss/machine_words.hpp"
 #include "t800/iss/memory.hpp"
+#include "t800/iss/profile.hpp"
 #include "t800/processors/processor_model.hpp"
 #include "t800/processors/timing_stepper.hpp"
 
@@ -121,6 +122,8 @@ class Core {
   Fpu& fpu() { return fpu_; }
   const ProcessorModel& processor() const { return processor_; }
   const StepTotals& timing() const { return stepper_.totals(); }
+  // Every instruction from now on is tallied in `profile` (null: none; not owned).
+  void set_profile(InstructionProfile* profile) { profile_ = profile; }
   std::int64_t instructions() const { return instructions_; }
   Word mem_start() const { return kMostNeg + Word(processor_.reserved_bytes); }
   // The timer of `priority` at the current cycle.
@@ -203,7 +206,8 @@ class Core {
   Fpu fpu_;
   LinkEngine* links_ = nullptr;
   std::int64_t instructions_ = 0;
-  bool running_ = false;   // a process holds the CPU
+  bool running_ = false;  // a process holds the CPU
+  InstructionProfile* profile_ = nullptr;
   bool stepping_ = false;  // an instruction is executing (control_moved)
   bool moved_ = false;     // it moved control elsewhere
   bool sync_requested_ = false;

@@ -269,6 +269,171 @@ TEST(Boot, AStoppedRunReportsWhatRan) {
   EXPECT_NE(b.output.out.find("P0: running at Iptr"), std::string::npos) << b.output.out;
 }
 
+// SP.TIME twice, 2.5 simulated seconds apart (a low-priority timer wait of 39,063 ticks of 64 us),
+// and SP.EXIT with (second - first) + (first - 1,000,000,000) as the status: 2 when the clock is
+// the simulated one started at --clock-start 1000000000 (the run's start plus the whole simulated
+// seconds), whatever the host's clock says and however fast the host runs.
+constexpr const char* kTimeTwice = R"(
+link0.out = #80000000
+link0.in  = #80000010
+
+start:  ajw 32
+        ldc 0                  -- the clocks start (a booted chip's are stopped until sttimer)
+        sttimer
+        call clock
+        ldl 3                  -- UTC, the reply's second INT32
+        stl 10
+        ldtimer                -- 2.5 s of low-priority ticks
+        ldc 39063
+        sum
+        tin
+        call clock
+        ldl 3
+        stl 11
+        ldl 11                 -- the status
+        ldl 10
+        diff
+        ldl 10
+        ldc 1000000000
+        diff
+        sum
+        stl 21
+        ldc 6                  -- SP.EXIT: length 6, tag 35, the status, a pad; from byte 1 of
+        ldlp 20                -- ws[20] so that the status is the word ws[21]
+        adc 1
+        sb
+        ldc 0
+        ldlp 20
+        adc 2
+        sb
+        ldc 35
+        ldlp 20
+        adc 3
+        sb
+        ldc 0
+        stl 22
+        ldlp 20
+        adc 1
+        ldc link0.out
+        ldc 8
+        out
+        ldlp 0                 -- its reply, as every request's: the host sends it, then exits
+        ldc link0.in
+        ldc 2
+        in
+        ldlp 1
+        ldc link0.in
+        ldc 6
+        in
+        stopp
+
+-- clock: SP.TIME; the reply's result byte into ws[1] of the caller's frame, its local time and
+-- UTC into ws[2] and ws[3]. Four words of its own below the four call pushed (Iptr, A, B, C).
+clock:  ajw -4
+        ldc time - t1
+        ldpi
+t1:     ldc link0.out
+        ldc 8
+        out
+        ldc 0
+        stl 0
+        ldlp 0                 -- the reply's length
+        ldc link0.in
+        ldc 2
+        in
+        ldlp 9                 -- its result byte: ws[1] of the caller
+        ldc link0.in
+        ldc 1
+        in
+        ldlp 10                -- local time and UTC: the caller's ws[2], ws[3]
+        ldc link0.in
+        ldl 0
+        adc -1
+        in
+        ajw 4
+        ret
+        .align 4
+time:   .byte 6, 0, 33, 0, 0, 0, 0, 0
+)";
+
+TEST(Boot, SpTimeTellsTheSimulatedClock) {
+  const auto dir = scratch("clock");
+  const std::string file = assemble(dir, "clock", kTimeTwice);
+  ASSERT_FALSE(file.empty());
+  const Booted simulated = boot(dir, file, "--clock-start 1000000000");
+  EXPECT_EQ(simulated.output.exit_code, 2) << simulated.output.out;
+  // Waiting for the timer, the processor is idle, not busy: 2.5 s of the run's 2.5 s and a bit.
+  ASSERT_TRUE(simulated.report.is_object()) << simulated.output.out;
+  const auto& p0 = simulated.report["processors"][0];
+  EXPECT_GT(p0["idle_us"].get<double>(), 2.5e6 - 100) << p0;
+  EXPECT_LT(p0["busy_us"].get<double>(), 1000) << p0;
+  const Booted host = boot(dir, file, "--clock host");
+  EXPECT_NE(host.output.exit_code, 2) << host.output.out;
+  const Booted wrong = boot(dir, file, "--clock wall");
+  EXPECT_EQ(wrong.output.exit_code, 2) << wrong.output.out;  // a usage error
+  EXPECT_NE(wrong.output.out.find("--clock"), std::string::npos) << wrong.output.out;
+}
+
+// A profile counts what ran as the datasheet prices it: a loop of 100 rounds around hello.s's
+// SP.WRITE. adc -1 is nfix 0; adc 15, one cycle each (T800 datasheet); cj is 2 cycles when it
+// falls through (99 times) and 4 when it jumps (once). While the host answers, the processor waits
+// for its host link.
+TEST(Boot, AProfileTalliesOperationsAsTheDatasheetPricesThem) {
+  const auto dir = scratch("profile");
+  std::string source = example_with("hello.s", {});
+  const std::string start = "start:  ajw 16";
+  const auto at = source.find(start);
+  ASSERT_NE(at, std::string::npos);
+  source.insert(at + start.size(), R"(
+        ldc 100
+        stl 0
+round:  ldl 0
+        adc -1
+        stl 0
+        ldl 0
+        cj rounds.done
+        j round
+rounds.done:)");
+  const std::string file = assemble(dir, "loop", source);
+  ASSERT_FALSE(file.empty());
+  const fs::path profile = dir / "profile.json";
+  const Booted b = boot(dir, file, "--profile " + profile.string());
+  EXPECT_EQ(b.output.exit_code, 0) << b.output.out;
+  std::ifstream in(profile);
+  ASSERT_TRUE(in) << b.output.out;
+  const auto json = nlohmann::json::parse(in);
+  const auto& p = json["processors"][0];
+  auto op = [&](const std::string& name) {
+    for (const auto& o : p["operations"])
+      if (o["op"] == name) return o;
+    return nlohmann::json{};
+  };
+  EXPECT_EQ(op("adc")["count"], 100) << p;
+  EXPECT_EQ(op("adc")["cycles"], 100 * (1 + 1)) << p;
+  EXPECT_EQ(op("cj")["count"], 100) << p;
+  EXPECT_EQ(op("cj")["cycles"], 99 * 2 + 4) << p;
+  EXPECT_EQ(op("j")["count"], 99) << p;
+  std::int64_t counted = 0;
+  for (const auto& o : p["operations"]) counted += o["count"].get<std::int64_t>();
+  EXPECT_EQ(counted, p["instructions"].get<std::int64_t>()) << p;
+  const double host_wait = p["waiting_us"]["link 0 (host) input"].get<double>();
+  EXPECT_GT(host_wait, 0) << p;
+  // Waiting for the host's reply, the CPU is idle: in the report as in the profile.
+  const auto& reported = b.report["processors"][0];
+  EXPECT_GE(reported["idle_us"].get<double>(), host_wait - 1e-6) << reported;
+  ASSERT_FALSE(p["hot_code"].empty()) << p;
+  // The loop is the hottest code: its block holds the first instruction of the loop.
+  const auto loop = std::stoul(p["hot_code"][0]["from"].get<std::string>().substr(1), nullptr, 16);
+  EXPECT_LE(loop, 0x80000070u + 16) << p;
+  // And tools/plot draws it (where Debian's python3-matplotlib is installed, as the plot tests).
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0) return;
+  const std::string plot = "cd " + test_paths::source_dir() +
+                           " && timeout 120 tools/plot profile " + profile.string() + " -o " +
+                           (dir / "profile.png").string();
+  EXPECT_EQ(std::system(plot.c_str()), 0) << plot;
+  EXPECT_TRUE(fs::exists(dir / "profile.png"));
+}
+
 TEST(Boot, InputOnALinkToNothingIsADeadlockNamingTheProcess) {
   const auto dir = scratch("deadlock");
   const Booted b = boot(dir, assemble(dir, "wait", "ajw 8\nldlp 0\nldc #80000014\nldc 4\nin\n"));

@@ -8,10 +8,12 @@
 #include <fmt/format.h>
 
 #include "network/input_file.hpp"
+#include "t800/sim_now.hpp"
 #include "workloads/boot/boot_session.hpp"
 #include "workloads/boot/host_server.hpp"
 #include "workloads/boot/iss_node.hpp"
 #include "workloads/registry.hpp"
+#include "workloads/run/output_file.hpp"
 #include "workloads/run/workload.hpp"
 #include "workloads/setting_error.hpp"
 
@@ -121,6 +123,10 @@ class BootWorkload : public Workload {
     server_.program_args = split_args(c.params.text("args"));
     server_.newline_is_return = true;  // stdin is a stream of lines: Return ends a typed one
     server_.environment.fixed["IBOARDSIZE"] = fmt::format("#{:X}", options_.installed_bytes);
+    profile_path_ = c.params.text("profile");
+    options_.profile = !profile_path_.empty();
+    simulated_clock_ = c.params.text("clock") == "simulated";
+    clock_start_ = c.params.integer("clock_start");
   }
 
   void build(network::Machine& machine) override {
@@ -131,8 +137,8 @@ class BootWorkload : public Workload {
       boot::IssNode* node = nodes_.back().get();
       machine.spawn(n, "iss", t800::Priority::low, [node](network::Process& p) { node->run(p); });
     }
-    host_ = std::make_unique<boot::HostServer>(machine, *session_, boot_file_,
-                                               std::make_unique<t800::host::SpServer>(server_));
+    host_ = std::make_unique<boot::HostServer>(
+        machine, *session_, boot_file_, std::make_unique<t800::host::SpServer>(server_, sp_host()));
     network::Process& host = machine.spawn(network::Machine::kHost, "iserver", t800::Priority::low,
                                            [this](network::Process& p) { host_->run(p); });
     host.set_daemon();  // it serves for as long as the program runs
@@ -186,10 +192,76 @@ class BootWorkload : public Workload {
     v.set("simulated_instructions_per_us", us > 0 ? double(s.instructions()) / us : 0.0);
     v.set("processors", std::move(processors));
     if (!failure.empty()) v.set("failure", failure);
+    if (!profile_path_.empty()) {
+      write_output_file(profile_path_, profile(machine).to_json(), "workload.profile");
+      v.set("profile", profile_path_);
+    }
     return v;
   }
 
   const boot::BootSession& session() const { return *session_; }
+
+  // The profile file (workload.profile; docs/iss.md, "Profiles"): per processor, what it executed
+  // by operation and by block of code, and what it waited for.
+  ResultValue profile(const network::Machine& machine) const {
+    ResultValue processors = ResultValue::list();
+    for (std::size_t n = 0; n < nodes_.size(); ++n) {
+      const boot::IssNode& node = *nodes_[n];
+      const boot::ProcessorAccount& a = session_->account(int(n));
+      ResultValue p;
+      p.set("name", a.name);
+      p.set("type", std::string(node.core().processor().name));
+      p.set("cycle_ns", node.core().processor().cycle_ns);
+      p.set("instructions", a.instructions);
+      p.set("cycles", a.cycles);
+      p.set("synchronisations", a.synchronisations);
+      p.set("dma_stall_cycles", a.dma_stall_cycles);
+      ResultValue ops = ResultValue::list();
+      for (const auto& [op, tally] : node.profile().instructions.operations()) {
+        ResultValue o;
+        o.set("op", std::string(t800::isa::mnemonic(op)));
+        o.set("count", tally.instructions);
+        o.set("cycles", tally.cycles);
+        ops.push(std::move(o));
+      }
+      p.set("operations", std::move(ops));
+      ResultValue hot = ResultValue::list();
+      for (const auto& [from, tally] : node.profile().instructions.hottest_blocks(kHotBlocks)) {
+        ResultValue b;
+        b.set("from", fmt::format("#{:08X}", from));
+        b.set("to", fmt::format("#{:08X}", from + t800::iss::InstructionProfile::kBlockBytes));
+        b.set("instructions", tally.instructions);
+        b.set("cycles", tally.cycles);
+        hot.push(std::move(b));
+      }
+      p.set("hot_code", std::move(hot));
+      p.set("idle_us", node.profile().idle_us);
+      ResultValue waits;
+      for (const auto& [what, us] : node.profile().waiting_us) waits.set(what, us);
+      p.set("waiting_us", std::move(waits));
+      processors.push(std::move(p));
+    }
+    ResultValue v;
+    v.set("file", path_);
+    v.set("simulated_us", machine.simulated_us());
+    v.set("block_bytes", std::int64_t(t800::iss::InstructionProfile::kBlockBytes));
+    v.set("processors", std::move(processors));
+    return v;
+  }
+
+  // The host the server touches: the process's streams, and a clock that tells the simulated
+  // time -- the run's start plus the simulated seconds, so that a program that times itself
+  // (SP.TIME) measures the simulated chip -- or the host's own clock when asked for.
+  t800::host::SpHost sp_host() const {
+    t800::host::SpHost host;
+    if (!simulated_clock_) return host;
+    const std::int64_t start =
+        clock_start_ >= 0 ? clock_start_ : t800::host::host_clock_now().utc_seconds;
+    host.clock = [start] {
+      return t800::host::host_time_at(start + std::int64_t(t800::sim_now().to_seconds()));
+    };
+    return host;
+  }
   bool reports_when_stopped() const override { return true; }
 
  private:
@@ -203,10 +275,14 @@ class BootWorkload : public Workload {
     return "nothing left to run";
   }
 
+  static constexpr std::size_t kHotBlocks = 40;
   std::string path_;
+  std::string profile_path_;
   Bytes boot_file_;
   boot::IssNodeOptions options_;
   t800::host::SpServerOptions server_;
+  bool simulated_clock_ = true;
+  std::int64_t clock_start_ = -1;  // UTC seconds; < 0: the host's clock when the run starts
   std::unique_ptr<boot::BootSession> session_;
   std::vector<std::unique_ptr<boot::IssNode>> nodes_;
   std::unique_ptr<boot::HostServer> host_;
@@ -231,6 +307,16 @@ const Registration registered_boot{
          {"addressing", T::text, std::string{"wrap"},
           "\"wrap\" (addresses modulo the memory, as boards decode them) or \"strict\" (an access "
           "outside halts the processor)", {}, {}, {"wrap", "strict"}},
+         {"profile", T::output_file, std::string{},
+          "write the run's profile here as JSON: per processor, each operation's count and "
+          "cycles, the hottest code, time waiting per link and timer (empty: none)", {}, {}, {}},
+         {"clock", T::text, std::string{"simulated"},
+          "what SP.TIME tells: \"simulated\" (clock_start plus the simulated seconds) or \"host\" "
+          "(the host's clock, as iserver gives it)", {}, {}, {"simulated", "host"}},
+         {"clock_start", T::integer, std::int64_t{-1},
+          "with clock = \"simulated\": the run's start, in seconds since 1970-01-01 UTC (-1: the "
+          "host's clock when the run starts); the local time adds the host zone's offset", -1,
+          double(std::int64_t(1) << 40), {}},
          {"max_instructions", T::integer, std::int64_t{0},
           "end the run when a processor has executed this many instructions (0: no limit)", 0,
           double(std::int64_t(1) << 62), {}},

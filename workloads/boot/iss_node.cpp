@@ -36,6 +36,24 @@ IssNode::IssNode(network::Machine& machine, int node, BootSession& session,
       tick_cycles_(sc_core::sc_get_time_resolution().to_seconds() * 1e9 / cycle_ns_) {
   core_.set_link_engine(this);
   session_.account(node).name = machine.node_name(node);
+  machine.transputer(node).activity().count_transfers_as_busy(false);
+  if (options_.profile) core_.set_profile(&profile_.instructions);
+  if (const auto& host = machine.topology().host; host && host->processor == node)
+    host_link_ = host->link;
+}
+
+std::vector<std::string> IssNode::awaited() const {
+  std::vector<std::string> what;
+  for (int l = 0; l < 4; ++l) {
+    const std::string link =
+        l == host_link_ ? fmt::format("link {} (host)", l) : fmt::format("link {}", l);
+    if (input_busy_[l]) what.push_back(link + " input");
+    if (output_busy_[l]) what.push_back(link + " output");
+    if (watching_[l]) what.push_back(link + " ALT guard");
+  }
+  if (core_.next_timer_cycle()) what.push_back("timer");
+  if (what.empty()) what.push_back("nothing (every process stopped)");
+  return what;
 }
 
 // The first cycle boundary at or after now. A cycle's time is rounded to the kernel's resolution
@@ -389,6 +407,9 @@ void IssNode::execute(network::Process& p) {
           if (a.waiting.empty()) return;  // every process has ended: nothing can happen any more
         }
         p.set_status_text(describe_waiting());
+        const sc_core::sc_time idle_from = t800::sim_now();
+        const std::vector<std::string> awaited_now =
+            options_.profile ? awaited() : std::vector<std::string>{};
         if (timer) {
           const sc_core::sc_time due = time_of(*timer), now = t800::sim_now();
           if (due > now) sc_core::wait(due - now, inbox_event_ | session_.ended_event());
@@ -396,6 +417,11 @@ void IssNode::execute(network::Process& p) {
           core_.advance_to(t800::sim_now() >= due ? std::max(*timer, now_cycle()) : now_cycle());
         } else {
           sc_core::wait(inbox_event_ | session_.ended_event());
+        }
+        if (options_.profile) {
+          const double us = (t800::sim_now() - idle_from).to_seconds() * 1e6;
+          profile_.idle_us += us;
+          for (const std::string& w : awaited_now) profile_.waiting_us[w] += us;
         }
         a.waiting.clear();
         break;

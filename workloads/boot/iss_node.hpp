@@ -15,7 +15,9 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "network/machine.hpp"
@@ -30,6 +32,17 @@ struct IssNodeOptions {
   t800::iss::AddressPolicy policy = t800::iss::AddressPolicy::wrap;
   std::int64_t max_instructions = 0;  // per processor; 0: no limit
   double slice_us = 1000;             // the run-ahead slice with nothing outstanding
+  bool profile = false;               // tally instructions and waits (IssNode::profile)
+};
+
+// What a profiled processor did (IssNodeOptions::profile): its instructions by operation and by
+// block of code, and the simulated time it was idle waiting for each thing -- a link's input or
+// output (the host's link named so), an ALT's link guard, its timer queue. Time idle while several
+// are awaited counts under each.
+struct NodeProfile {
+  t800::iss::InstructionProfile instructions;
+  std::map<std::string, double> waiting_us;
+  double idle_us = 0;
 };
 
 class IssNode : public t800::iss::LinkEngine {
@@ -46,6 +59,7 @@ class IssNode : public t800::iss::LinkEngine {
   void reset(int link, bool output) override;
 
   const t800::iss::Core& core() const { return core_; }
+  const NodeProfile& profile() const { return profile_; }
   // What the processor is doing now, for a run stopped before its end: running (at which Iptr),
   // halted, or its waiting processes; and the link transfers in flight.
   std::string state() const;
@@ -86,6 +100,9 @@ class IssNode : public t800::iss::LinkEngine {
   bool outstanding() const;
   std::string describe_waiting() const;
   std::string describe_links() const;
+  std::vector<std::string> awaited() const;  // what an idle processor waits for (NodeProfile)
+  NodeProfile profile_;
+  int host_link_ = -1;  // this processor's link wired to the host, if one is
   std::int64_t dma_seen_ = 0;
 };
 

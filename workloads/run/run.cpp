@@ -241,7 +241,7 @@ RunReport simulate(const RunInputs& in, Realised& realised) {
       report.tables = workload->tables();
       report.failure = failure_of(report.workload);
     }
-  } else if (report.limit != network::Limit::none && workload->reports_when_stopped()) {
+  } else if (workload->reports_when_stopped()) {  // a limit or a deadlock
     report.workload = workload->results(machine);
   }
   return report;

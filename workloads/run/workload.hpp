@@ -25,9 +25,9 @@ class Workload {
   // After results(): the tables to write to the workload's output_file parameters (none by
   // default; tools/ writes each where its parameter says).
   virtual std::vector<OutputTable> tables() const { return {}; }
-  // Whether results() can say what a run stopped before its end did (a booted program's
-  // instructions and cycles so far, each processor's state): asked only then. Most workloads'
-  // results are an answer, and a stopped run has none.
+  // Whether results() can say what a run stopped before its end did (by a limit or a deadlock: a
+  // booted program's instructions and cycles so far, each processor's state): asked only then.
+  // Most workloads' results are an answer, and a stopped run has none.
   virtual bool reports_when_stopped() const { return false; }
 };
 
