@@ -2,10 +2,10 @@
 # The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer, leak detection on, in
 # ./build-asan (-DT800SIM_SANITIZE=ON). Only SystemC's own leaks are suppressed: tests/sanitizer/lsan.supp
 # says why each entry is there. Run after scripts/setup.sh (the same packages: gcc brings the sanitizer
-# runtimes). Used by .ci/run.
+# runtimes). Used by .ci/run. The benchmarks are not tests and are not built here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DT800SIM_SANITIZE=ON >/dev/null
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DT800SIM_SANITIZE=ON -DT800SIM_BENCHMARKS=OFF >/dev/null
 cmake --build build-asan -j"$(nproc)"
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 # Children the tests start (t800sim run, sweeps) inherit these.
