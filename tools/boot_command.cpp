@@ -197,6 +197,10 @@ int boot_file(const BootArgs& args) {
                              args.max_instructions, report.simulated_us * 1e-6);
     return kExitLimit;
   }
+  if (const auto* broken = field(report.workload, "host_protocol_error")) {
+    std::cerr << "error: " << broken->to_text() << "\n";
+    return kExitHostProtocol;
+  }
   if (!report.failure.empty()) {
     std::cerr << "error: " << report.failure << "\n";
     if (const auto* ps = field(report.workload, "processors"))

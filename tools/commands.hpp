@@ -29,6 +29,7 @@ constexpr int kExitBadInput = 2;   // a configuration or command-line error
 constexpr int kExitBadResult = 3;  // the run ended but its results are not results (a failed solve,
                                    // a NaN or infinity: workloads::RunReport::failure)
 constexpr int kExitLimit = 4;      // --max-sim-time or --max-wall-time stopped the run
+constexpr int kExitHostProtocol = 5;  // t800sim boot: the program's host-link bytes were not SP
 
 // Thrown by run_command with the exit code; main() catches it and returns the code, so that every
 // object (the CLI::App, the simulation) is destroyed on the way out, as std::exit would not.

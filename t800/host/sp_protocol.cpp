@@ -10,6 +10,9 @@ int iserver_exit_code(std::int32_t status) {
   // iserver 1.50 hostc.c SpExit: only the two toolset values are translated.
   if (status == kSpsSuccess) return kIserverSuccessExit;
   if (status == kSpsFailure) return kIserverFailureExit;
+  // A process's exit code is 8 bits: a status that does not fit must not become 0 (256) or
+  // another program's code (257 -> 1); the report keeps the status itself.
+  if (status < 0 || status > 255) return kIserverFailureExit;
   return status;
 }
 

@@ -118,7 +118,9 @@ inline constexpr std::uint8_t kSpWholeCommandLine = 1;
 
 // SP.EXIT's status: the toolset's sps.success and sps.failure (hostio.inc) and the host exit codes
 // iserver 1.50 turns them into (hostc.c SpExit; TERMINATE_OK_EXIT 0, TERMINATE_FAIL_EXIT 255 in
-// both bsd.h and msdos.h). Any other status is the exit code as given.
+// both bsd.h and msdos.h). Any other status the iserver passes to exit(), and a shell keeps its low
+// 8 bits, so that 256 would read as success: here a status from 1 to 254 is the exit code as given,
+// and any other (negative, or above 255) is 255, a failure, whatever its low bits.
 inline constexpr std::int32_t kSpsSuccess = 999999999;
 inline constexpr std::int32_t kSpsFailure = -999999999;
 inline constexpr int kIserverSuccessExit = 0;

@@ -9,9 +9,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <limits>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
+
+#include "t800/host/sandbox.hpp"
 
 namespace t800::host {
 
@@ -217,68 +220,12 @@ std::string join_command_line(const std::vector<std::string>& words) {
 }
 
 // Whether path is root or below it, component by component ("/a/bc" is not below "/a/b").
-bool within(const fs::path& root, const fs::path& path) {
-  return std::mismatch(root.begin(), root.end(), path.begin(), path.end()).first == root.end();
-}
-
-// Where a program's file name leads, confined to the root.
-struct Resolution {
-  enum class Verdict { kOk, kBadName, kRefused };
-  Verdict verdict;
-  fs::path path;  // kOk: absolute, every symbolic link on the way resolved
-};
-
-// Walks the name one component at a time from the canonical root, resolving each symbolic link as
-// it is met, so a link anywhere on the way is judged by where it really leads. Refused: an absolute
-// name, any "..", a link leading outside the root, and a link leading nowhere (creating a file
-// through a dangling link would create its target, wherever that is). What does not exist yet is
-// taken as it is spelt; fopen, remove or rename then decide. With follow_last false (REMOVE,
-// RENAME, which act on a link itself, as C's remove and rename do) a final link is left as it is:
-// it lies in a directory inside the root, wherever it points. (A link swapped in between this check
-// and the call is not caught: the sandbox is against programs, not against other host processes.)
-Resolution resolve(const fs::path& root, const std::string& name, bool follow_last) {
-  using Verdict = Resolution::Verdict;
-  // iserver filec.c answers an empty name ER_ERROR; a NUL would cut the name short in C.
-  if (name.empty() || name.find('\0') != std::string::npos) return {Verdict::kBadName, {}};
-  const fs::path relative(name);
-  if (relative.has_root_name() || relative.has_root_directory()) return {Verdict::kRefused, {}};
-  // The last component that names something ("a/b/." and "a/b/" end at b).
-  auto last = relative.end();
-  for (auto it = relative.begin(); it != relative.end(); ++it) {
-    if (!it->empty() && it->native() != ".") last = it;
-  }
-  fs::path at = root;
-  for (auto it = relative.begin(); it != relative.end(); ++it) {
-    const std::string& part = it->native();
-    if (part.empty() || part == ".") continue;
-    if (part == "..") return {Verdict::kRefused, {}};
-    fs::path next = at / *it;
-    std::error_code error;
-    const fs::file_status status = fs::symlink_status(next, error);
-    if (!error && fs::is_symlink(status) && (follow_last || it != last)) {
-      next = fs::canonical(next, error);  // follows every link; fails on a dangling one or a loop
-      if (error) return {Verdict::kRefused, {}};
-    }
-    if (!within(root, next)) return {Verdict::kRefused, {}};
-    at = std::move(next);
-  }
-  return {Verdict::kOk, at};
-}
-
-SpResult refusal(Resolution::Verdict verdict) {
-  return verdict == Resolution::Verdict::kBadName ? SpResult::kError : SpResult::kNoPrivilege;
-}
-
 }  // namespace
 
 SpServer::SpServer(SpServerOptions options, SpHost host)
-    : options_(std::move(options)), host_(std::move(host)) {
-  std::error_code error;
-  root_ = fs::canonical(options_.root, error);
-  if (error || !fs::is_directory(root_)) {
-    throw std::invalid_argument("SP server root '" + options_.root.string() +
-                                "' is not an existing directory");
-  }
+    : options_(std::move(options)),
+      host_(std::move(host)),
+      sandbox_(std::make_unique<Sandbox>(options_.root)) {
   streams_.resize(kSpMaxStreams);
   // iserver files.c DupStdStreams: ids 0, 1, 2 are stdin, stdout, stderr.
   streams_[kSpStdin] = std::make_unique<StandardStream>(host_.in, nullptr);
@@ -287,6 +234,10 @@ SpServer::SpServer(SpServerOptions options, SpHost host)
 }
 
 SpServer::~SpServer() = default;
+
+const fs::path& SpServer::root() const {
+  return sandbox_->root();
+}
 
 detail::SpStream* SpServer::stream(std::int32_t id) {
   if (id < 0 || id >= kSpMaxStreams) return nullptr;
@@ -361,13 +312,11 @@ Bytes SpServer::open(SpRequestReader& fields) {
   // bsd.h: the same fopen modes for text and binary (a POSIX host does not translate).
   static constexpr const char* kModes[] = {"r", "w", "a", "r+", "w+", "a+"};
   if (mode < 1 || mode > 6) return reply(SpResult::kError);
-  const Resolution where = resolve(root_, name, true);
-  if (where.verdict != Resolution::Verdict::kOk) return reply(refusal(where.verdict));
-
   const auto free_id = std::find(streams_.begin(), streams_.end(), nullptr);
   if (free_id == streams_.end()) return reply(SpResult::kNoResource);
-  std::FILE* file = std::fopen(where.path.c_str(), kModes[mode - 1]);
-  if (file == nullptr) return reply(SpResult::kError);
+  const Sandbox::Opened opened_file = sandbox_->open(name, kModes[mode - 1]);
+  if (opened_file.result != SpResult::kOk) return reply(opened_file.result);
+  std::FILE* file = opened_file.file;
   // filec.c: append modes start at the end ("the ANSI spec says the initial position is
   // implementation specific").
   const auto opened = static_cast<SpOpenMode>(mode);
@@ -511,7 +460,11 @@ Bytes SpServer::tell(SpRequestReader& fields) {
   SpStream* target = stream(id);
   if (target == nullptr) return reply(SpResult::kBadId);
   const long position = target->tell();
-  if (position < 0) return reply(SpResult::kError);
+  // A position past INT32's range cannot be told in the reply's INT32: an error, not a wrapped
+  // number the program would seek back to.
+  if (position < 0 || position > std::numeric_limits<std::int32_t>::max()) {
+    return reply(SpResult::kError);
+  }
   SpReplyWriter writer(SpResult::kOk);
   writer.put_u32(static_cast<std::uint32_t>(position));
   return std::move(writer).finish();
@@ -547,12 +500,7 @@ Bytes SpServer::ferror(SpRequestReader& fields) {
 Bytes SpServer::remove(SpRequestReader& fields) {
   std::string name;
   if (!fields.read_slice(name)) return malformed();
-  const Resolution where = resolve(root_, name, false);
-  if (where.verdict != Resolution::Verdict::kOk) return reply(refusal(where.verdict));
-  if (where.path == root_) return reply(SpResult::kNoPrivilege);  // "." would be the root itself
-  std::error_code error;
-  if (!fs::exists(fs::symlink_status(where.path, error))) return reply(SpResult::kNoFile);
-  return reply(std::remove(where.path.c_str()) == 0 ? SpResult::kOk : SpResult::kError);
+  return reply(sandbox_->remove(name));
 }
 
 // SP.RENAME: slice old name, slice new name -> result.
@@ -560,13 +508,7 @@ Bytes SpServer::rename(SpRequestReader& fields) {
   std::string from;
   std::string to;
   if (!fields.read_slice(from) || !fields.read_slice(to)) return malformed();
-  const Resolution old_place = resolve(root_, from, false);
-  if (old_place.verdict != Resolution::Verdict::kOk) return reply(refusal(old_place.verdict));
-  const Resolution new_place = resolve(root_, to, false);
-  if (new_place.verdict != Resolution::Verdict::kOk) return reply(refusal(new_place.verdict));
-  if (old_place.path == root_ || new_place.path == root_) return reply(SpResult::kNoPrivilege);
-  const bool ok = std::rename(old_place.path.c_str(), new_place.path.c_str()) == 0;
-  return reply(ok ? SpResult::kOk : SpResult::kError);
+  return reply(sandbox_->rename(from, to));
 }
 
 // SP.GETKEY: -> result, BYTE key; waits for one (here: the next byte of the input stream).

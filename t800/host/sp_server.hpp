@@ -5,13 +5,15 @@
 // hostc.c, serverc.c) field for field, and differs where a simulator must not do what the iserver
 // did on the user's own machine:
 // - files live under one root directory; absolute names, ".." and symbolic links that lead out
-//   of it (or nowhere) are refused with kNoPrivilege;
+//   of it (or nowhere) are refused with kNoPrivilege, also when another host process swaps a link
+//   in while the name is opened (sandbox.hpp);
 // - SP.SYSTEM runs nothing unless allow_system is set;
 // - SP.GETENV reveals only the variables the policy lists (by default the INMOS toolset's own), not
 //   the whole host environment;
 // - a reply never exceeds the 512-byte packet: READ, GETS, CORE and long strings are clipped to
 //   kSpMaxReplyData (iserver 1.50 would overrun its 4094-byte buffer, t4 stops);
-// - a request too short for its fields is answered kBadParameters instead of being read past.
+// - a request too short for its fields is answered kBadParameters instead of being read past;
+// - SP.TELL of a position past INT32's range answers an error, not the position wrapped.
 #pragma once
 
 #include <cstdint>
@@ -101,6 +103,8 @@ struct SpHost {
   std::function<int(const std::string&)> system = host_system;
 };
 
+class Sandbox;
+
 namespace detail {
 class SpStream;
 }
@@ -123,7 +127,7 @@ class SpServer {
   // The host exit code the iserver gives for that status (iserver_exit_code); 0 before SP.EXIT.
   int exit_code() const { return exited_ ? iserver_exit_code(exit_status_) : 0; }
 
-  const std::filesystem::path& root() const { return root_; }
+  const std::filesystem::path& root() const;  // canonical
 
  private:
   std::vector<std::uint8_t> open(SpRequestReader& fields);
@@ -155,7 +159,7 @@ class SpServer {
 
   SpServerOptions options_;
   SpHost host_;
-  std::filesystem::path root_;                              // canonical
+  std::unique_ptr<Sandbox> sandbox_;                        // the files it may name
   std::vector<std::unique_ptr<detail::SpStream>> streams_;  // index = stream id
   bool exited_ = false;
   std::int32_t exit_status_ = 0;

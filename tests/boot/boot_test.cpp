@@ -34,6 +34,36 @@ TEST(Boot, AnExitStatusThatIsNotTheToolsetsIsTheExitCode) {
   EXPECT_EQ(b.output.exit_code, 7) << b.output.out;
 }
 
+// A shell keeps an exit code's low 8 bits: a status of 256 or 512 must not read as success.
+TEST(Boot, AnExitStatusThatDoesNotFitEightBitsIsAFailure) {
+  const auto dir = scratch("wide-status");
+  for (const std::string status : {"256", "512", "-1"}) {
+    std::string source = example_with("hello.s", {});
+    const auto at = source.find(".word 999999999");
+    ASSERT_NE(at, std::string::npos);
+    source.replace(at, 15, ".word " + status);
+    const Booted b = boot(dir, assemble(dir, "wide", source));
+    EXPECT_EQ(b.output.exit_code, 255) << status << ": " << b.output.out;
+    ASSERT_TRUE(b.report.is_object()) << b.output.out;
+    EXPECT_EQ(b.report["workload"]["exit_status"], std::stoi(status));  // the status itself
+  }
+}
+
+// A packet whose length no SP packet has (an odd 7: a body is padded to an even length) is a
+// broken host protocol: its own exit code, 5, not a halted processor's 3.
+TEST(Boot, ABrokenHostProtocolHasAnExitCodeOfItsOwn) {
+  const auto dir = scratch("bad-packet");
+  std::string source = example_with("hello.s", {});
+  const auto at = source.find("write:  .byte 26, 0");
+  ASSERT_NE(at, std::string::npos);
+  source.replace(at, 19, "write:  .byte 7, 0 ");
+  const Booted b = boot(dir, assemble(dir, "bad", source));
+  EXPECT_EQ(b.output.exit_code, 5) << b.output.out;
+  EXPECT_NE(b.output.out.find("not SP requests"), std::string::npos) << b.output.out;
+  ASSERT_TRUE(b.report.is_object()) << b.output.out;
+  EXPECT_TRUE(b.report["workload"].contains("host_protocol_error")) << b.report["workload"];
+}
+
 TEST(Boot, TheArgumentsAfterTwoDashesAreTheProgramsCommandLine) {
   const auto dir = scratch("echo");
   const std::string file = assemble(dir, "echo", example_with("echo.s", {}));
@@ -458,7 +488,8 @@ TEST(Boot, ASceneRunsABootFileAsAWorkload) {
   write_text(dir / "chain.toml", "name = \"boot-chain\"\n[network]\ntopology = \"" + kTopologies +
                                      "pipeline-6.toml\"\n[workload]\nkind = \"boot\"\nfile = \"" +
                                      file + "\"\n");
-  const auto o = cli_test::run("run " + (dir / "chain.toml").string() + " --json 2>&1");
+  const auto o =
+      cli_test::run("run " + (dir / "chain.toml").string() + " --json --max-wall-time 60 2>&1");
   EXPECT_EQ(o.exit_code, 0) << o.out;
   EXPECT_NE(o.out.find("\"exit_status\": 6"), std::string::npos) << o.out;
 }

@@ -105,8 +105,13 @@ TEST(SpExitStatus, MapsAsTheIserver) {
   EXPECT_EQ(iserver_exit_code(0), 0);
   EXPECT_EQ(iserver_exit_code(1), 1);
   EXPECT_EQ(iserver_exit_code(42), 42);
-  EXPECT_EQ(iserver_exit_code(-1), -1);
-  EXPECT_EQ(iserver_exit_code(999999998), 999999998);
+  EXPECT_EQ(iserver_exit_code(255), 255);
+  // What does not fit a process's 8-bit exit code is a failure, never its low bits (0 for 256).
+  EXPECT_EQ(iserver_exit_code(-1), 255);
+  EXPECT_EQ(iserver_exit_code(256), 255);
+  EXPECT_EQ(iserver_exit_code(512), 255);
+  EXPECT_EQ(iserver_exit_code(257), 255);
+  EXPECT_EQ(iserver_exit_code(999999998), 255);
 }
 
 TEST(SpFraming, LengthRules) {

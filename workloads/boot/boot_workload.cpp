@@ -158,6 +158,7 @@ class BootWorkload : public Workload {
     v.set("host_requests", host_->requests());
     ResultValue processors = ResultValue::list();
     std::string failure = s.host_error;
+    if (!s.host_error.empty()) v.set("host_protocol_error", s.host_error);
     std::int64_t syncs = 0;
     for (const boot::ProcessorAccount& a : s.accounts()) {
       ResultValue p;
