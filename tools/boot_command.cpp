@@ -7,10 +7,14 @@
 #include <csignal>
 
 #include <chrono>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "network/icollect_map.hpp"
+#include "network/input_file.hpp"
 #include "network/stop_request.hpp"
 #include "network/topology_file.hpp"
 #include "tools/commands.hpp"
@@ -28,7 +32,7 @@ namespace {
 
 struct BootArgs {
   std::string file;
-  std::string processor = "T800-20";
+  std::string processor;  // empty: T800-20, or a map's family
   std::int64_t memory = std::int64_t(2) << 20;
   std::string network;
   std::string host_dir;
@@ -63,12 +67,45 @@ network::Topology single_board(const std::string& type_name) {
   return t;
 }
 
+std::optional<t800::ProcessorType> processor_flag(const std::string& name) {
+  if (name.empty()) return std::nullopt;
+  const auto type = t800::parse_processor_type(name);
+  if (!type)
+    throw std::invalid_argument("--processor " + name + ": not a processor type; give one of " +
+                                t800::processor_type_names());
+  return type;
+}
+
+// The network: one board, a topology file, or the map file icollect wrote for a configured
+// program. --processor sets the board's processor, or every processor of a map (which names only
+// the family); a topology file names its own, so the flag beside one is an error.
+network::Topology boot_network(const BootArgs& args) {
+  const std::optional<t800::ProcessorType> each = processor_flag(args.processor);
+  if (args.network.empty()) return single_board(each ? args.processor : "T800-20");
+  const bool toml = std::filesystem::path(args.network).extension() == ".toml";
+  if (!toml) {
+    std::string text;
+    try {
+      text = network::read_input_file(args.network, std::size_t(64) << 20);
+    } catch (const network::InputFileError& e) {
+      if (!e.missing) throw std::invalid_argument("--network " + args.network + ": " + e.what());
+    }
+    if (network::is_icollect_map(text))
+      return network::parse_icollect_map(text, args.network, each);
+  }
+  if (each)
+    throw std::invalid_argument("--processor " + args.processor + " beside --network " +
+                                args.network +
+                                ": a topology file names its processors' types; give one or the "
+                                "other (--processor applies to the processors of an icollect map)");
+  return network::load_topology(args.network);
+}
+
 Scene boot_scene(const BootArgs& args) {
   Scene scene;
   scene.file = args.file;
   scene.name = "boot " + args.file;
-  scene.topology =
-      args.network.empty() ? single_board(args.processor) : network::load_topology(args.network);
+  scene.topology = boot_network(args);
   scene.workload_kind = "boot";
   const workloads::WorkloadInfo* info = workloads::find_workload("boot");
   for (const workloads::ParamSpec& p : info->params) scene.workload.set(p.name, p.default_value);
@@ -225,13 +262,15 @@ void add_boot_command(CLI::App& app) {
   cmd->add_option("program_args", args->program_args, "the program's command line, after --")
       ->type_name("ARGS");
   cmd->add_option("--processor", args->processor,
-                  "the processor type of the one-transputer board (without --network)")
+                  "the processor type of the one-transputer board, or of every processor of an "
+                  "icollect map (default T800-20, or the map's family at 20 MHz)")
       ->type_name("TYPE");
   cmd->add_option("--memory", args->memory,
                   "bytes of memory per processor from MostNeg, on-chip RAM included")
       ->type_name("BYTES");
   cmd->add_option("--network", args->network,
-                  "a topology file (its host link boots the network) instead of one board")
+                  "a topology file (its host link boots the network), or the .map file icollect "
+                  "wrote for a configured program, instead of one board")
       ->type_name("TOPOLOGY");
   cmd->add_option("--host-dir", args->host_dir,
                   "the directory the program's files live in (default: the current one)")

@@ -279,6 +279,38 @@ to = "P5.link0"
   }
 }
 
+// A configured program's network as the collector's map file describes it: the chain that
+// chain.s boots (Pi.link1 to P(i+1).link0), every processor the type --processor gives.
+TEST(Boot, AnIcollectMapIsTheNetwork) {
+  const auto dir = scratch("map");
+  // chain.s boots five processors behind the first.
+  std::string memory_maps, wires;
+  for (int p = 0; p < 6; ++p) {
+    memory_maps += "Memory map for 'System[" + std::to_string(p) + "]' processor " +
+                   std::to_string(p) + " T800\n";
+    wires += p == 0 ? "  Connect HOST to processor 0 link 0\n"
+                    : "  Connect processor " + std::to_string(p) + " link 0 to processor " +
+                          std::to_string(p - 1) + " link 1\n";
+  }
+  const std::string map = memory_maps + "\nConnectivity for network\n\n" + wires;
+  write_text(dir / "chain.map", map);
+  const std::string file = assemble(dir, "chain", example_with("chain.s", {{"iterations", "100"}}));
+  ASSERT_FALSE(file.empty());
+  const Booted b =
+      boot(dir, file, "--network " + (dir / "chain.map").string() + " --processor T805-25");
+  EXPECT_EQ(b.output.exit_code, 6) << b.output.out;  // the processors that ran
+  ASSERT_TRUE(b.report.is_object()) << b.output.out;
+  EXPECT_EQ(b.report["workload"]["processors"].size(), 6u);
+  EXPECT_NE(b.output.out.find("P5 T805-25"), std::string::npos) << b.output.out;
+  // A topology file names its own types: --processor beside one would be ignored, so it is an
+  // error.
+  const Booted both =
+      boot(dir, file, "--network " + kTopologies + "pipeline-6.toml --processor T805-25");
+  EXPECT_EQ(both.output.exit_code, 2) << both.output.out;
+  EXPECT_NE(both.output.out.find("a topology file names its processors' types"), std::string::npos)
+      << both.output.out;
+}
+
 // A run stopped by a limit still says what ran: instructions and cycles per processor, and where
 // each one was.
 TEST(Boot, AStoppedRunReportsWhatRan) {
