@@ -61,6 +61,9 @@ class Link : public sc_core::sc_module {
   // false / nullopt. For a link used by one channel (one message queued at a time).
   bool transmit(int from, Message message, const sc_core::sc_time& deadline);
   std::optional<Message> receive(int to, const sc_core::sc_time& deadline);
+  // resetch on end `from`'s output from another process: the message under way is abandoned and
+  // its transmit returns. False when nothing was under way.
+  bool abandon_output(int from);
 
   // Faults (network/faults.hpp). Each is checked when the link would act, so an armed fault adds
   // no event; `hit` is called, with what it hit, each time it changes something. A link with a

@@ -39,6 +39,13 @@ void Link::reset_output(int di) {
   d.wire_wake.notify(SC_ZERO_TIME);
 }
 
+bool Link::abandon_output(int from) {
+  if (dir_[from].queue.empty()) return false;
+  reset_output(from);
+  dir_[from].sent_event.notify(SC_ZERO_TIME);  // its transmit sees it completed
+  return true;
+}
+
 // resetch on the receiving end: the input is disarmed and a message half in is dropped.
 void Link::reset_input(int di) {
   Direction& d = dir_[di];

@@ -156,6 +156,7 @@ class BootWorkload : public Workload {
     v.set("instructions", s.instructions());
     const double us = machine.simulated_us();
     v.set("host_requests", host_->requests());
+    if (host_->replies_cut_short()) v.set("host_replies_cut_short", host_->replies_cut_short());
     ResultValue processors = ResultValue::list();
     std::string failure = s.host_error;
     if (!s.host_error.empty()) v.set("host_protocol_error", s.host_error);

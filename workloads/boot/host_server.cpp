@@ -33,9 +33,35 @@ void send(t800::Link& link, int end, Bytes bytes, const std::string& label) {
 }
 }  // namespace
 
+void HostServer::reply_thread() {
+  for (;;) {
+    while (!replying_) sc_core::wait(reply_ready_);
+    send(*link_, end_, reply_, "SP reply");  // returns early when abandoned
+    replying_ = false;
+    reply_sent_.notify(sc_core::SC_ZERO_TIME);
+  }
+}
+
+void HostServer::reply(Bytes bytes) {
+  if (replying_) {
+    // The program asks again before it took the whole reply: what it left is dropped.
+    link_->abandon_output(end_);
+    ++replies_cut_short_;
+    wait_for_reply();
+  }
+  reply_ = std::move(bytes);
+  replying_ = true;
+  reply_ready_.notify(sc_core::SC_ZERO_TIME);
+}
+
+void HostServer::wait_for_reply() {
+  while (replying_) sc_core::wait(reply_sent_);
+}
+
 void HostServer::run(network::Process& p) {
   p.set_status_text("sending the boot file");
   send(*link_, end_, std::move(boot_file_), "boot file");
+  sc_core::sc_spawn([this] { reply_thread(); }, "iserver_reply");
   t800::host::SpPacketReassembler packets;
   for (;;) {
     p.set_status_text("waiting for an SP request on the host link");
@@ -49,8 +75,9 @@ void HostServer::run(network::Process& p) {
     packets.feed(**bytes);
     while (auto request = packets.next_packet()) {
       ++requests_;
-      send(*link_, end_, t800::host::sp_frame(server_->handle(*request)), "SP reply");
+      reply(t800::host::sp_frame(server_->handle(*request)));
       if (server_->exited()) {
+        wait_for_reply();  // the program reads SP.EXIT's reply before the run ends
         session_.exit_status = server_->exit_status();
         session_.exit_code = server_->exit_code();
         session_.end("the program called SP.EXIT");
