@@ -108,8 +108,9 @@ void Core::step(const Decoded& d) {
 // Out of line (it formats messages): step() runs for every instruction.
 void Core::refuse(const Decoded& d) {
   if (!d.defined)
-    undefined(d, d.bytes > 16 ? "a prefix chain of more than 16 bytes"
-                              : fmt::format("undefined operation #{:X}", d.operand));
+    undefined(d, d.op == Op::pfix || d.op == Op::nfix
+                     ? fmt::format("a prefix chain of {} bytes or more", kMaxInstructionBytes)
+                     : fmt::format("undefined operation #{:X}", d.operand));
   else
     undefined(d, fmt::format("{} is not an instruction of the {}", isa::mnemonic(d.op),
                              processor_.timing->family));

@@ -60,7 +60,8 @@ Raw raw_at(const Memory& memory, Word iptr) {
     } else {
       return {function, std::int32_t(operand), bytes};
     }
-    if (bytes > 16) return {function, std::int32_t(operand), bytes};  // a runaway prefix chain
+    if (bytes == kMaxInstructionBytes)  // a runaway prefix chain: pfix or nfix, undefined
+      return {function, std::int32_t(operand), bytes};
   }
 }
 
@@ -87,7 +88,8 @@ Decoded decode(const Memory& memory, Word iptr) {
       // `ldc selector; fpentry` is the FPU-entry operation the selector names.
       const Raw next = raw_at(memory, iptr + Word(raw.bytes));
       const auto entry = fpu_entry_of(raw.operand);
-      if (entry && next.function == kFunctionOpr && operation_of(next.operand) == Op::fpentry) {
+      if (entry && next.function == kFunctionOpr && operation_of(next.operand) == Op::fpentry &&
+          raw.bytes + next.bytes <= kMaxInstructionBytes) {
         d.op = *entry;
         d.bytes = std::uint8_t(raw.bytes + next.bytes);
         d.prefix_cycles = std::uint8_t(prefix_cycles(*entry, 0));
@@ -122,15 +124,17 @@ const Decoded& DecodeCache::fill(Slot& s, Word iptr) {
 }
 
 void DecodeCache::invalidate_line(std::uint32_t line_offset) {
-  // Any instruction with a byte in the line: it started at most 16 prefix bytes before it. The
-  // slots are indexed by address, so the line's instructions (and those that run into it) sit in
-  // consecutive slots; their tags say whether they are the line's.
+  // Any instruction with a byte in the line: it started at most kMaxInstructionBytes before it
+  // (a fused `ldc; fpentry` included). The slots are indexed by address, so the line's
+  // instructions (and those that run into it) sit in consecutive slots; their tags say whether
+  // they are the line's.
   const Word line = kMostNeg + line_offset;
-  for (Word a = line - 24; a != line + (1u << Memory::kLineShift); ++a) {
+  constexpr std::uint32_t line_bytes = 1u << Memory::kLineShift;
+  for (Word a = line - Word(kMaxInstructionBytes); a != line + line_bytes; ++a) {
     Slot& s = slots_[a & kMask];
     if (!s.valid) continue;
     const std::uint32_t start = memory_.offset(s.iptr);
-    if (start + s.decoded.bytes > line_offset && start < line_offset + 16) s.valid = false;
+    if (start + s.decoded.bytes > line_offset && start < line_offset + line_bytes) s.valid = false;
   }
 }
 

@@ -14,6 +14,12 @@
 
 namespace t800::iss {
 
+// A prefix chain may be as long as a program likes (each pfix 0 shifts in zeros, and INMOS's
+// loaders pad code with them: rayshade's has 26): one decoded instruction holds up to this many
+// bytes, prefixes included. A longer chain is taken for a program run into what is not code
+// (memory full of pfix bytes) and halts it.
+inline constexpr int kMaxInstructionBytes = 255;
+
 struct Decoded {
   isa::Op op = isa::Op::ldc;
   bool defined = false;    // false: an operation code the instruction set does not have

@@ -195,4 +195,34 @@ dst:    .byte 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7, 7
   EXPECT_EQ(m.word(d + 8), 0x07070403u);  // row 1 at stride 8: 3, 4
 }
 
+// A prefix chain may be as long as the code likes (CWG, "prefixing": each pfix shifts the operand
+// register four places; INMOS loaders pad with pfix 0): 26 pfix 0 bytes and then `ldc 5` load 5,
+// and the chain costs a cycle a byte as any prefix does. A chain that never ends (memory full of
+// pfix bytes) halts the processor instead of decoding for ever.
+TEST(IssInteger, ALongPrefixChainIsOneInstruction) {
+  std::string pad;
+  for (int k = 0; k < 26; ++k) pad += k ? ", #20" : "#20";
+  EXPECT_EQ(run(".byte " + pad + ", #45").a, 5u);
+  // pfix 1 after the zeros, then ldc 2: #12, whatever zeros came before.
+  EXPECT_EQ(run(".byte " + pad + ", #21, #42").a, 0x12u);
+  // nfix 0 then ldc 0: ~0 << 4 = -16, after any number of zeros.
+  EXPECT_EQ(run(".byte " + pad + ", #60, #40").a, Word(-16));
+  const auto cycles = [](const std::string& code) {
+    TestMachine m;
+    m.boot("ajw 16\n" + code + "\nstopp\n");
+    m.run();
+    return m.core.cycle();
+  };
+  EXPECT_EQ(cycles(".byte " + pad + ", #45") - cycles(".byte #45"), 26);
+  TestMachine m;
+  std::string runaway;
+  for (int k = 0; k < 300; ++k) runaway += k ? ", #20" : "#20";
+  m.boot("ajw 16\n.byte " + runaway + "\n");
+  EXPECT_EQ(m.run(), StopReason::halted);
+  ASSERT_TRUE(m.core.halt_report());
+  EXPECT_NE(m.core.halt_report()->reason.find("a prefix chain of 255 bytes or more"),
+            std::string::npos)
+      << m.core.halt_report()->reason;
+}
+
 }  // namespace
