@@ -69,6 +69,11 @@ sc_core::sc_time IssNode::time_of(std::int64_t cycle) const {
   return sc_core::sc_time(double(cycle) * cycle_ns_, sc_core::SC_NS);
 }
 
+// The first cycle boundary at or after `t` (as now_cycle).
+std::int64_t IssNode::cycle_of(const sc_core::sc_time& t) const {
+  return std::int64_t(std::ceil(t.to_seconds() * 1e9 / cycle_ns_ - tick_cycles_));
+}
+
 // For deadlock reports: every waiting process, and for a link input how far it got.
 std::string IssNode::describe_waiting() const {
   const auto waiting = core_.waiting();
@@ -127,6 +132,31 @@ bool IssNode::outstanding() const {
   for (int l = 0; l < 4; ++l)
     if (output_busy_[l] || input_busy_[l] || watching_[l]) return true;
   return false;
+}
+
+// How far the core may run with what is outstanding: nothing coming in to an armed input or a
+// watched guard can be seen before the first byte of a block a neighbour starts from now on, one
+// data packet away; a block already started is seen when its first byte arrives. A transfer in
+// flight (an output, or an input whose bytes are coming) is timed by the link model's next event:
+// none, the caller's bound.
+std::optional<std::int64_t> IssNode::lookahead_bound() const {
+  std::optional<std::int64_t> bound;
+  for (int l = 0; l < 4; ++l) {
+    if (output_busy_[l]) return std::nullopt;
+    if (!(input_busy_[l] || watching_[l]) || !ports_[l]) continue;
+    const LinkPort& port = *ports_[l];
+    std::int64_t until = 0;
+    if (port.nothing_coming()) {
+      until = now_cycle() + std::max<std::int64_t>(
+                                1, std::int64_t(port.data_packet().to_seconds() * 1e9 / cycle_ns_));
+    } else if (const auto ready = port.ready_after_now(); ready && !input_busy_[l]) {
+      until = std::max(now_cycle() + 1, cycle_of(*ready));
+    } else {
+      return std::nullopt;  // bytes are coming (or an arrival is due now): follow the link model
+    }
+    bound = bound ? std::min(*bound, until) : until;
+  }
+  return bound;
 }
 
 void IssNode::post(LinkEvent e) {
@@ -252,7 +282,9 @@ void IssNode::start_input(int link, Word count) {
 }
 
 bool IssNode::input_pending(int link) const {
-  return ports_[link] && ports_[link]->input_pending();
+  // Asked at the instruction's cycle, which may be ahead of SystemC's clock: the bound the core
+  // runs to (lookahead) holds back nothing that could arrive before it.
+  return ports_[link] && ports_[link]->input_pending(time_of(core_.cycle()));
 }
 
 void IssNode::watch_input(int link, bool on) {
@@ -309,6 +341,18 @@ void IssNode::deliver_link_events() {
   }
 }
 
+// A watched guard whose first byte has arrived by now is seen now: the port's own notice may come
+// later in this instant.
+void IssNode::deliver_arrivals() {
+  for (int l = 0; l < 4; ++l)
+    if (watching_[l] && ports_[l] && ports_[l]->input_pending(t800::sim_now())) {
+      if (core_.cycle() < now_cycle()) core_.advance_to(now_cycle());
+      watching_[l] = false;
+      ports_[l]->unwatch();
+      core_.input_arrived(l);
+    }
+}
+
 void IssNode::start_requested_transfers() {
   std::vector<std::function<void()>> now;
   now.swap(requested_);
@@ -350,6 +394,7 @@ void IssNode::execute(network::Process& p) {
   for (;;) {
     if (session_.over() || machine_.stopping()) break;
     deliver_link_events();
+    deliver_arrivals();
     if (!busy && !core_.idle()) {
       activity.set_cpu(t800::ProcessorState::compute, {}, t800::sim_now());
       busy = true;
@@ -360,9 +405,13 @@ void IssNode::execute(network::Process& p) {
     // cycle's instruction boundary, as the chip sees it.
     std::int64_t bound = now_cycle() + slice;
     if (outstanding()) {
-      const sc_core::sc_time ahead = sc_core::sc_time_to_pending_activity();
-      const double cycles = ahead.to_seconds() * 1e9 / cycle_ns_;
-      if (cycles < double(slice)) bound = now_cycle() + std::max<std::int64_t>(1, cycles);
+      if (const auto lookahead = lookahead_bound()) {
+        bound = std::min(bound, *lookahead);
+      } else {
+        const sc_core::sc_time ahead = sc_core::sc_time_to_pending_activity();
+        const double cycles = ahead.to_seconds() * 1e9 / cycle_ns_;
+        if (cycles < double(slice)) bound = now_cycle() + std::max<std::int64_t>(1, cycles);
+      }
     }
     // Not past the run's simulated-time limit: what a stopped run reports ran before it.
     if (const double limit_s = machine_.options().max_sim_s; limit_s > 0)

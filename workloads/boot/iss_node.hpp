@@ -6,17 +6,20 @@
 // link").
 //
 // Time: the core runs ahead on its own clock and stops where the world outside matters: when it
-// starts a link transfer (which starts at the core's cycle), when it has nothing to run, and, while
-// a transfer or an ALT's link guard of its own is outstanding, at the next instant anything else in
-// the simulation is due (so a transfer's end or an arrival is seen at the first instruction
-// boundary after it, as the chip sees it). With nothing outstanding nothing outside can change what
-// it does, and it runs ahead in slices of simulated time that only let SystemC's clock keep up.
+// starts a link transfer (which starts at the core's cycle), when it has nothing to run, while a
+// transfer of its own is in flight at the next instant anything else in the simulation is due (so
+// a transfer's end is seen at the first instruction boundary after it, as the chip sees it), and
+// while an input or an ALT's guard waits on a link nothing is coming on, one data packet ahead
+// (what a neighbour starts from now on arrives no sooner). With nothing outstanding nothing
+// outside can change what it does, and it runs ahead in slices of simulated time that only let
+// SystemC's clock keep up.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,6 +78,9 @@ class IssNode : public t800::iss::LinkEngine {
   Bytes read_boot_block(int link, std::int64_t count);
   void execute(network::Process& p);
   void deliver_link_events();
+  void deliver_arrivals();
+  std::optional<std::int64_t> lookahead_bound() const;
+  std::int64_t cycle_of(const sc_core::sc_time& t) const;
   void start_requested_transfers();
   void charge_dma();
   void account();

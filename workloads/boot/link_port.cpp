@@ -4,6 +4,7 @@
 #include <typeindex>
 
 #include "t800/payload_bytes.hpp"
+#include "t800/sim_now.hpp"
 
 namespace workloads::boot {
 
@@ -18,9 +19,19 @@ void register_byte_payload() {
 }
 
 LinkPort::LinkPort(t800::Link& link, int end, const std::string& name)
-    : link_(link), end_(end), name_(name) {
+    : link_(link), end_(end), name_(name), packet_(link.bit_time() * 11.0) {
   sc_core::sc_spawn([this] { output_thread(); }, (name + "_out").c_str());
   sc_core::sc_spawn([this] { input_thread(); }, (name + "_in").c_str());
+  sc_core::sc_spawn([this] { pending_thread(); }, (name + "_pending").c_str());
+}
+
+// Notes when a sender starts a block towards this end, at that instant: a block's first byte
+// arrives one data packet later.
+void LinkPort::pending_thread() {
+  for (;;) {
+    sc_core::wait(link_.input_pending_event(end_));
+    if (!pending_since_ && link_.input_pending(end_)) pending_since_ = t800::sim_now();
+  }
 }
 
 void LinkPort::start_output(Bytes bytes, std::function<void()> done) {
@@ -35,8 +46,22 @@ void LinkPort::start_input(std::int64_t count, std::function<void(Bytes)> done) 
   input_changed_.notify(sc_core::SC_ZERO_TIME);
 }
 
-bool LinkPort::input_pending() const {
-  return !buffer_.empty() || link_.input_pending(end_);
+bool LinkPort::input_pending(const sc_core::sc_time& at) const {
+  if (!buffer_.empty() || incoming_) return true;  // a byte is here, or held at the sender
+  if (!link_.input_pending(end_)) return false;
+  return !pending_since_ || at >= *pending_since_ + packet_;
+}
+
+std::optional<sc_core::sc_time> LinkPort::ready_after_now() const {
+  if (!buffer_.empty() || incoming_ || !link_.input_pending(end_) || !pending_since_)
+    return std::nullopt;
+  const sc_core::sc_time ready = *pending_since_ + packet_;
+  if (ready <= t800::sim_now()) return std::nullopt;
+  return ready;
+}
+
+bool LinkPort::nothing_coming() const {
+  return buffer_.empty() && !incoming_ && !link_.input_pending(end_);
 }
 
 void LinkPort::watch(std::function<void()> arrived) {
@@ -89,16 +114,18 @@ void LinkPort::input_thread() {
       done(std::move(got));
       continue;
     }
-    if (arrived_ && input_pending()) {
+    if (arrived_ && input_pending(t800::sim_now())) {
       auto arrived = std::move(arrived_);
       arrived_ = nullptr;
       arrived();
       continue;
     }
-    if (arrived_)
-      sc_core::wait(input_changed_ | link_.input_pending_event(end_));
-    else
+    if (!arrived_)
       sc_core::wait(input_changed_);
+    else if (const auto ready = ready_after_now())
+      sc_core::wait(*ready - t800::sim_now(), input_changed_);
+    else
+      sc_core::wait(input_changed_ | link_.input_pending_event(end_));
   }
 }
 
@@ -117,7 +144,12 @@ void LinkPort::take(const t800::Message& piece) {
   const auto first = incoming_->begin() + std::ptrdiff_t(taken_);
   buffer_.insert(buffer_.end(), first, first + std::ptrdiff_t(piece.bytes));
   taken_ += std::size_t(piece.bytes);
-  if (taken_ == incoming_->size()) incoming_.reset();
+  if (taken_ == incoming_->size()) {
+    incoming_.reset();
+    // A block queued behind this one starts now, when this one's last byte is taken.
+    pending_since_.reset();
+    if (link_.input_pending(end_)) pending_since_ = t800::sim_now();
+  }
 }
 
 }  // namespace workloads::boot

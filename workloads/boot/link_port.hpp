@@ -11,6 +11,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,8 +39,16 @@ class LinkPort {
   // per direction at a time.
   void start_output(Bytes bytes, std::function<void()> done);
   void start_input(std::int64_t count, std::function<void(Bytes)> done);
-  // A byte is here, or a sender has started a block (what an ALT's enabled link guard sees).
-  bool input_pending() const;
+  // What an ALT's enabled link guard sees at `at` (now or later, the core's own cycle): a byte is
+  // here, or one has arrived -- one data packet after its sender started the block, when the
+  // chip's link channel becomes ready (the link model's input_pending is at the start).
+  bool input_pending(const sc_core::sc_time& at) const;
+  // A sender has started a block towards this end whose first byte arrives after now: when.
+  std::optional<sc_core::sc_time> ready_after_now() const;
+  // Nothing is on its way to this end: no byte here, no block started. Whatever a sender starts
+  // from now on is seen here one data packet later at the earliest (data_packet()).
+  bool nothing_coming() const;
+  sc_core::sc_time data_packet() const { return packet_; }
   // `arrived` is called once, when input_pending() becomes true; replaces any earlier watch.
   void watch(std::function<void()> arrived);
   void unwatch();
@@ -62,6 +71,7 @@ class LinkPort {
  private:
   void output_thread();
   void input_thread();
+  void pending_thread();
   void take(const t800::Message& piece);
 
   t800::Link& link_;
@@ -77,6 +87,9 @@ class LinkPort {
   SharedBytes incoming_;  // the block coming in, and how much of it is taken
   std::size_t taken_ = 0;
   sc_core::sc_event input_changed_;
+  // When the block now pending at the link started (its sender's output), while one is.
+  std::optional<sc_core::sc_time> pending_since_;
+  sc_core::sc_time packet_;  // one data packet on this link: 11 bit times
 };
 
 }  // namespace workloads::boot
