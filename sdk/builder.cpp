@@ -106,6 +106,20 @@ void Builder::code(const std::string& process, const Kernel& kernel) {
   code_.push_back({process, kernel});
 }
 
+void Builder::booted(const std::string& processor) {
+  booted_.push_back(processor);  // checked against the network when the program is realised
+}
+
+ByteLink Builder::byte_link(const std::string& name, const std::string& process,
+                            const std::string& booted_processor) {
+  auto slot = std::make_shared<detail::ByteLinkSlot>();
+  slot->name = name;
+  slot->process = process;
+  slot->processor = booted_processor;
+  byte_links_.push_back(slot);
+  return ByteLink(std::move(slot));
+}
+
 Results& Results::table(const std::string& param, std::vector<std::string> columns,
                         std::vector<std::vector<double>> rows) {
   for (const auto& row : rows)

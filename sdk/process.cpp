@@ -10,6 +10,8 @@
 #include "network/channel.hpp"
 #include "network/machine.hpp"
 #include "network/process.hpp"
+#include "network/transport/link_io.hpp"
+#include "t800/link.hpp"
 #include "t800/payload_bytes.hpp"
 #include "t800sim/kernel.hpp"
 
@@ -185,6 +187,49 @@ double Process::tick_us() const {
 
 void Process::wait_after(std::int64_t t) {
   impl_.wait_after(t);
+}
+
+namespace {
+detail::ByteLinkSlot& joined(const ByteLink& link) {
+  detail::ByteLinkSlot& s = *link.slot();
+  if (!s.link)
+    throw std::logic_error("byte link " + s.name + " is used before the program is realised");
+  return s;
+}
+}  // namespace
+
+void Process::out(const ByteLink& link, Bytes bytes) {
+  detail::ByteLinkSlot& s = joined(link);
+  if (bytes.empty()) throw std::invalid_argument("byte link " + s.name + ": no bytes to send");
+  t800::Message m;
+  m.bytes = std::int64_t(bytes.size());
+  m.payload = std::make_shared<Bytes>(std::move(bytes));  // the booted end reads these bytes
+  m.label = s.name;
+  network::link_out(impl_, *s.link, s.end, std::move(m));
+}
+
+// The booted sender's output is one block, taken here in as many pieces as the reads ask for: the
+// first piece brings the block's bytes, each piece its count of them.
+Bytes Process::in(const ByteLink& link, std::size_t count) {
+  detail::ByteLinkSlot& s = joined(link);
+  Bytes got;
+  while (got.size() < count) {
+    impl_.communicate(0, false);
+    impl_.deschedule();
+    const t800::Message piece = s.link->receive(s.end, std::int64_t(count - got.size()));
+    impl_.reschedule();
+    if (const auto* bytes = std::any_cast<std::shared_ptr<Bytes>>(&piece.payload)) {
+      s.incoming = *bytes;
+      s.taken = 0;
+    } else if (piece.payload.has_value() || !s.incoming) {
+      throw std::runtime_error("byte link " + s.name + " received a message without bytes");
+    }
+    const auto first = s.incoming->begin() + std::ptrdiff_t(s.taken);
+    got.insert(got.end(), first, first + std::ptrdiff_t(piece.bytes));
+    s.taken += std::size_t(piece.bytes);
+    if (s.taken == s.incoming->size()) s.incoming.reset();
+  }
+  return got;
 }
 
 }  // namespace t800sim

@@ -65,6 +65,11 @@ void ProgramWorkload::build(network::Machine& machine) {
   builder_.attach(machine);
   run_program_code(label_, "its build()", [this] { program_->build(builder_); });
   placed_ = realise(label_, builder_, machine, scene_placement_);
+  run_program_code(label_, "its booted processors", [&] {
+    booted_.emplace(label_, builder_, topology_);
+    booted_->join(machine, placed_);
+    booted_->spawn(machine);
+  });
 }
 
 workloads::ResultValue ProgramWorkload::results(const network::Machine& machine) const {
@@ -85,6 +90,7 @@ workloads::ResultValue ProgramWorkload::results(const network::Machine& machine)
     placement.push(r);
   }
   v.set("placement", placement);
+  if (booted_ && !booted_->empty()) v.set("booted", booted_->results());
   return v;
 }
 

@@ -5,9 +5,11 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "sdk/booted.hpp"
 #include "sdk/placement.hpp"
 #include "t800sim/program.hpp"
 #include "workloads/run/workload.hpp"
@@ -40,6 +42,7 @@ class ProgramWorkload : public workloads::Workload {
   std::vector<workloads::PlacementEntry> scene_placement_;
   Builder builder_;  // owns the channels the processes' handles point to
   std::vector<PlacedProcess> placed_;
+  std::optional<BootedProcessors> booted_;              // its processors that run machine code
   mutable std::vector<workloads::OutputTable> tables_;  // the program's, from results()
 };
 

@@ -3,6 +3,7 @@
 # are written with it; the rest of sdk/ (placement, registration, plugins) builds on workloads/.
 set(SDK_RUNTIME_SOURCES
     ${PROJECT_SOURCE_DIR}/sdk/alt.cpp
+    ${PROJECT_SOURCE_DIR}/sdk/booted.cpp
     ${PROJECT_SOURCE_DIR}/sdk/builder.cpp
     ${PROJECT_SOURCE_DIR}/sdk/farm_schedule.cpp
     ${PROJECT_SOURCE_DIR}/sdk/farm_support.cpp

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "t800sim/byte_link.hpp"
 #include "t800sim/channel.hpp"
 #include "t800sim/protocol.hpp"
 
@@ -91,6 +92,12 @@ class Process {
   value_of<P> in(const Chan<P>& c) {
     return in(c.in());
   }
+
+  // Bytes down a byte link to a booted processor (t800sim/byte_link.hpp): returns when its link
+  // engine has taken the last; and the next `count` bytes the booted program outputs, however it
+  // split them.
+  void out(const ByteLink& link, Bytes bytes);
+  Bytes in(const ByteLink& link, std::size_t count);
 
   // occam's OutputOrFail.t / InputOrFail.t (INMOS's reliable-link library): the communication
   // gives up at `deadline_us` (simulated time, in us) and resets the link channel, so the process

@@ -23,6 +23,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "t800sim/byte_link.hpp"
 #include "t800sim/channel.hpp"
 #include "t800sim/kernel.hpp"
 #include "t800sim/process.hpp"
@@ -132,6 +133,15 @@ class Builder {
   // 4 KB on chip is placed there).
   void code(const std::string& process, const Kernel& kernel);
 
+  // A processor that runs real machine code instead of this program's processes (docs/iss.md,
+  // "Mixed networks"): at reset it waits on its links, as the chip does, to be booted through one
+  // of them -- by a process of this program over a byte_link, or by a booted neighbour.
+  void booted(const std::string& processor);
+  // The link between `process` and its neighbour `booted_processor`, carrying raw bytes
+  // (t800sim/byte_link.hpp). The two must be placed on neighbours, and no channel may use the link.
+  ByteLink byte_link(const std::string& name, const std::string& process,
+                     const std::string& booted_processor);
+
   // ---- For the simulator ----
   // The machine the program will run on, for the SDK's skeletons, which plan with its timing
   // (t800sim/farm.hpp); nullptr until the simulator attaches it.
@@ -145,6 +155,10 @@ class Builder {
     Kernel kernel;
   };
   const std::vector<DeclaredCode>& declared_code() const { return code_; }
+  const std::vector<std::string>& declared_booted() const { return booted_; }
+  const std::vector<std::shared_ptr<detail::ByteLinkSlot>>& declared_byte_links() const {
+    return byte_links_;
+  }
 
  private:
   ProcessDecl& add(const std::string& name, int n, bool group, Process::IndexedBody body);
@@ -161,6 +175,8 @@ class Builder {
   // By name: a program of thousands of channels declares each end in constant time.
   std::unordered_map<std::string, detail::ChannelSlot*> channel_index_;
   std::vector<DeclaredCode> code_;
+  std::vector<std::string> booted_;
+  std::vector<std::shared_ptr<detail::ByteLinkSlot>> byte_links_;
   const network::Machine* machine_ = nullptr;
 };
 
