@@ -29,6 +29,12 @@ std::int64_t TimingStepper::Bus::access(std::int64_t at, int words) {
   return at;
 }
 
+void TimingStepper::Fetcher::Words::push_back(std::int64_t ready) {
+  if (size_ == kCapacity) throw std::logic_error("timing: an instruction spanning more than 127 code words");
+  ring_[(head_ + size_) & kMask] = ready;
+  ++size_;
+}
+
 std::int64_t TimingStepper::Fetcher::ready_external(std::int64_t begin, std::int64_t end,
                                                     std::int64_t at) {
   const std::int64_t first = begin / 4, last = (end - 1) / 4;

@@ -6,8 +6,8 @@
 // executes, so the two agree cycle for cycle on the same code.
 #pragma once
 
+#include <array>
 #include <cstdint>
-#include <deque>
 
 #include "t800/processors/instruction_timing.hpp"
 
@@ -100,8 +100,27 @@ class TimingStepper {
     void started_external(std::int64_t begin, std::int64_t at);
     bool external_;
     Bus& bus_;
-    std::int64_t first_ = 0;          // the code word words_.front() is for
-    std::deque<std::int64_t> words_;  // when each code word since first_ is in the processor
+    // When each code word from first_ on is in the processor: the words an instruction spans
+    // and the one fetched ahead, so a few (an instruction is at most 255 bytes, 65 words).
+    class Words {
+     public:
+      void clear() { size_ = 0; }
+      bool empty() const { return size_ == 0; }
+      std::size_t size() const { return size_; }
+      void pop_front() {
+        head_ = (head_ + 1) & kMask;
+        --size_;
+      }
+      void push_back(std::int64_t ready);
+      std::int64_t operator[](std::size_t i) const { return ring_[(head_ + i) & kMask]; }
+
+     private:
+      static constexpr std::size_t kCapacity = 128, kMask = kCapacity - 1;
+      std::array<std::int64_t, kCapacity> ring_;  // only [head_, head_ + size_) is read
+      std::size_t head_ = 0, size_ = 0;
+    };
+    std::int64_t first_ = 0;  // the code word words_[0] is for
+    Words words_;
   };
 
   const InstructionTimingTable& table_;

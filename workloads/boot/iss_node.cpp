@@ -139,7 +139,7 @@ bool IssNode::outstanding() const {
 // data packet away; a block already started is seen when its first byte arrives. A transfer in
 // flight (an output, or an input whose bytes are coming) is timed by the link model's next event:
 // none, the caller's bound.
-std::optional<std::int64_t> IssNode::lookahead_bound() const {
+std::optional<std::int64_t> IssNode::lookahead_bound(std::int64_t now) const {
   std::optional<std::int64_t> bound;
   for (int l = 0; l < 4; ++l) {
     if (output_busy_[l]) return std::nullopt;
@@ -147,10 +147,9 @@ std::optional<std::int64_t> IssNode::lookahead_bound() const {
     const LinkPort& port = *ports_[l];
     std::int64_t until = 0;
     if (port.nothing_coming()) {
-      until = now_cycle() + std::max<std::int64_t>(
-                                1, std::int64_t(port.data_packet().to_seconds() * 1e9 / cycle_ns_));
+      until = now + packet_cycles_[l];
     } else if (const auto ready = port.ready_after_now(); ready && !input_busy_[l]) {
-      until = std::max(now_cycle() + 1, cycle_of(*ready));
+      until = std::max(now + 1, cycle_of(*ready));
     } else {
       return std::nullopt;  // bytes are coming (or an arrival is due now): follow the link model
     }
@@ -170,6 +169,10 @@ void IssNode::run(network::Process& p) {
     if (t.port(l).link)
       ports_[l] = std::make_unique<LinkPort>(
           *t.port(l).link, t.port(l).end, fmt::format("{}_link{}", machine_.node_name(node_), l));
+  for (int l = 0; l < 4; ++l)
+    if (ports_[l])
+      packet_cycles_[l] = std::max<std::int64_t>(
+          1, std::int64_t(ports_[l]->data_packet().to_seconds() * 1e9 / cycle_ns_));
   if (!boot(p)) return;
   execute(p);
 }
@@ -403,14 +406,15 @@ void IssNode::execute(network::Process& p) {
     // notification, at no time at all) a bound of no cycles would run nothing, and two cores
     // would hand each other zero waits for ever. An event within the cycle is seen at the next
     // cycle's instruction boundary, as the chip sees it.
-    std::int64_t bound = now_cycle() + slice;
+    const std::int64_t now = now_cycle();
+    std::int64_t bound = now + slice;
     if (outstanding()) {
-      if (const auto lookahead = lookahead_bound()) {
+      if (const auto lookahead = lookahead_bound(now)) {
         bound = std::min(bound, *lookahead);
       } else {
         const sc_core::sc_time ahead = sc_core::sc_time_to_pending_activity();
         const double cycles = ahead.to_seconds() * 1e9 / cycle_ns_;
-        if (cycles < double(slice)) bound = now_cycle() + std::max<std::int64_t>(1, cycles);
+        if (cycles < double(slice)) bound = now + std::max<std::int64_t>(1, cycles);
       }
     }
     // Not past the run's simulated-time limit: what a stopped run reports ran before it.

@@ -79,7 +79,7 @@ class IssNode : public t800::iss::LinkEngine {
   void execute(network::Process& p);
   void deliver_link_events();
   void deliver_arrivals();
-  std::optional<std::int64_t> lookahead_bound() const;
+  std::optional<std::int64_t> lookahead_bound(std::int64_t now) const;
   std::int64_t cycle_of(const sc_core::sc_time& t) const;
   void start_requested_transfers();
   void charge_dma();
@@ -98,6 +98,7 @@ class IssNode : public t800::iss::LinkEngine {
   double cycle_ns_;
   double tick_cycles_;  // the kernel's time resolution, in cycles
   std::array<std::unique_ptr<LinkPort>, 4> ports_;
+  std::array<std::int64_t, 4> packet_cycles_{};  // one data packet on each link, in cycles
   std::vector<LinkEvent> inbox_;
   sc_core::sc_event inbox_event_;
   std::vector<std::function<void()>> requested_;  // transfers to start at the core's cycle
