@@ -1,8 +1,9 @@
 // Speed of the instruction-set simulator (issue 24), a benchmark program, not a test: simulated
 // T800 instructions per host second with full timing, on one processor and on chains of 4 and 16
 // booted through each other (examples/iss/chain.s: every processor counts down a loop, so all
-// compute at once), and a link-bound program (examples/iss/pingpong.s, 1000-byte round trips),
-// with the SystemC synchronisations per instruction. Each run is a child `t800sim boot ... --json`;
+// compute at once), a link-bound program (examples/iss/pingpong.s, 1000-byte round trips), and two
+// processors computing while each watches a link in an ALT (examples/iss/watch.s), with the
+// SystemC synchronisations per instruction. Each run is a child `t800sim boot ... --json`;
 // the rate is instructions over the host seconds of the simulation (wall_s less elaboration_s).
 #include <sys/wait.h>
 
@@ -84,6 +85,7 @@ int measure(const Options& o) {
   fs::create_directories(dir);
   const std::string chain = read(tools::find_repository_file("examples/iss/chain.s"));
   const std::string pingpong = read(tools::find_repository_file("examples/iss/pingpong.s"));
+  const std::string watch = read(tools::find_repository_file("examples/iss/watch.s"));
   std::cout << fmt::format("{:<22} {:>5} {:>14} {:>10} {:>9} {:>12} {:>12}\n", "program", "procs",
                            "instructions", "sim_s", "host_s", "M_instr/s", "syncs/instr");
   struct Case {
@@ -97,6 +99,7 @@ int measure(const Options& o) {
       {"chain (compute)", with(counted, "hops:   .word ", "3"), 4},
       {"chain (compute)", with(counted, "hops:   .word ", "15"), 16},
       {"pingpong 1000 B x 2000", with(with(pingpong, "rounds = ", "2000"), "bytes = ", "1000"), 2},
+      {"watch (ALT on a link)", with(watch, "iterations = ", std::to_string(o.iterations)), 2},
   };
   for (const Case& c : cases) {
     Result best;
