@@ -46,14 +46,22 @@ void LinkPort::start_input(std::int64_t count, std::function<void(Bytes)> done) 
   input_changed_.notify(sc_core::SC_ZERO_TIME);
 }
 
+// A block taken in part whose sender gave up on the rest (resetch, or the host dropping a reply
+// the program left unread) is no longer at the link: its remainder is not coming. (Until the
+// sender's next block, which is then taken for that remainder: ready a data packet early, and only
+// after such an abandon.)
+bool LinkPort::partly_taken() const {
+  return incoming_ && link_.input_pending(end_);
+}
+
 bool LinkPort::input_pending(const sc_core::sc_time& at) const {
-  if (!buffer_.empty() || incoming_) return true;  // a byte is here, or held at the sender
+  if (!buffer_.empty() || partly_taken()) return true;  // a byte is here, or held at the sender
   if (!link_.input_pending(end_)) return false;
   return !pending_since_ || at >= *pending_since_ + packet_;
 }
 
 std::optional<sc_core::sc_time> LinkPort::ready_after_now() const {
-  if (!buffer_.empty() || incoming_ || !link_.input_pending(end_) || !pending_since_)
+  if (!buffer_.empty() || partly_taken() || !link_.input_pending(end_) || !pending_since_)
     return std::nullopt;
   const sc_core::sc_time ready = *pending_since_ + packet_;
   if (ready <= t800::sim_now()) return std::nullopt;
@@ -61,7 +69,7 @@ std::optional<sc_core::sc_time> LinkPort::ready_after_now() const {
 }
 
 bool LinkPort::nothing_coming() const {
-  return buffer_.empty() && !incoming_ && !link_.input_pending(end_);
+  return buffer_.empty() && !link_.input_pending(end_);
 }
 
 void LinkPort::watch(std::function<void()> arrived) {

@@ -73,6 +73,7 @@ class LinkPort {
   void input_thread();
   void pending_thread();
   void take(const t800::Message& piece);
+  bool partly_taken() const;
 
   t800::Link& link_;
   int end_;
