@@ -98,7 +98,16 @@ network::Topology boot_network(const BootArgs& args) {
                                 args.network +
                                 ": a topology file names its processors' types; give one or the "
                                 "other (--processor applies to the processors of an icollect map)");
-  return network::load_topology(args.network);
+  if (toml) return network::load_topology(args.network);
+  try {
+    return network::load_topology(args.network);
+  } catch (const network::ConfigError& e) {
+    // Neither a map nor TOML: most likely a configuration's source, which is not read.
+    throw network::ConfigError(
+        e.where(), e.message() +
+                       " (--network takes a topology file or the .map file icollect wrote beside "
+                       "the boot file; a configuration's .cfs or .pgm source is not read)");
+  }
 }
 
 Scene boot_scene(const BootArgs& args) {

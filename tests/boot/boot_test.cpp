@@ -309,6 +309,13 @@ TEST(Boot, AnIcollectMapIsTheNetwork) {
   EXPECT_EQ(both.output.exit_code, 2) << both.output.out;
   EXPECT_NE(both.output.out.find("a topology file names its processors' types"), std::string::npos)
       << both.output.out;
+  // A configuration's source is neither: the error says what --network takes.
+  write_text(dir / "net.cfs", "T800 (memory = 4M) Root;\nconnect Root.link[0] to host;\n");
+  const Booted cfs = boot(dir, file, "--network " + (dir / "net.cfs").string());
+  EXPECT_EQ(cfs.output.exit_code, 2) << cfs.output.out;
+  EXPECT_NE(cfs.output.out.find("net.cfs:1:"), std::string::npos) << cfs.output.out;
+  EXPECT_NE(cfs.output.out.find("the .map file icollect wrote"), std::string::npos)
+      << cfs.output.out;
 }
 
 // A program that reads a reply field by field leaves the pad byte iserver adds to an odd body
