@@ -135,19 +135,24 @@ bool IssNode::outstanding() const {
 }
 
 // How far the core may run with what is outstanding: nothing coming in to an armed input or a
-// watched guard can be seen before the first byte of a block a neighbour starts from now on, one
-// data packet away; a block already started is seen when its first byte arrives. A transfer in
-// flight (an output, or an input whose bytes are coming) is timed by the link model's next event:
-// none, the caller's bound.
+// watched guard can be seen before the first byte of a block a neighbour starts, one data packet
+// after it starts; and a neighbour starts one only when it runs, at the next instant anything in
+// the simulation is due at the earliest. A block already started is seen when its first byte
+// arrives. A transfer in flight (an output, or an input whose bytes are coming) is timed by the
+// link model's next event: none, the caller's bound.
 std::optional<std::int64_t> IssNode::lookahead_bound(std::int64_t now) const {
   std::optional<std::int64_t> bound;
+  std::optional<std::int64_t> next_due;  // the next instant anything else runs, asked for once
   for (int l = 0; l < 4; ++l) {
     if (output_busy_[l]) return std::nullopt;
     if (!(input_busy_[l] || watching_[l]) || !ports_[l]) continue;
     const LinkPort& port = *ports_[l];
     std::int64_t until = 0;
     if (port.nothing_coming()) {
-      until = now + packet_cycles_[l];
+      if (!next_due)
+        next_due = now + std::int64_t(sc_core::sc_time_to_pending_activity().to_seconds() * 1e9 /
+                                      cycle_ns_);
+      until = *next_due + packet_cycles_[l];
     } else if (const auto ready = port.ready_after_now(); ready && !input_busy_[l]) {
       until = std::max(now + 1, cycle_of(*ready));
     } else {
