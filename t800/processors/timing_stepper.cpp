@@ -30,7 +30,8 @@ std::int64_t TimingStepper::Bus::access(std::int64_t at, int words) {
 }
 
 void TimingStepper::Fetcher::Words::push_back(std::int64_t ready) {
-  if (size_ == kCapacity) throw std::logic_error("timing: an instruction spanning more than 127 code words");
+  if (size_ == kCapacity)
+    throw std::logic_error("timing: an instruction spanning more than 127 code words");
   ring_[(head_ + size_) & kMask] = ready;
   ++size_;
 }
