@@ -33,7 +33,7 @@ using Length = Fpu::Length;
 using Rounding = Fpu::Rounding;
 using Register = Fpu::Register;
 
-enum class Op : std::uint8_t { add, sub, mul, div };
+enum class Arith : std::uint8_t { add, sub, mul, div };
 
 constexpr u64 kSign64 = u64(1) << 63;
 constexpr u64 kExp64 = u64(0x7FF) << 52;
@@ -349,24 +349,24 @@ Register canonical(const Register& r) {
 // Notebook.txt "Not-a-Number Arithmetic"): the NaN operand, or of two the one with the larger
 // fraction (FB on a tie). FB - FA returns FA's NaN negated; FB * FA and FB / FA give the NaN the
 // sign of the product. The NaN is returned as it is (a signalling NaN is not quietened).
-u64 propagate_nan(Op op, u64 fb, u64 fa) {
-  if (op == Op::sub) fa ^= kSign64;
+u64 propagate_nan(Arith op, u64 fb, u64 fa) {
+  if (op == Arith::sub) fa ^= kSign64;
   const bool nb = is_nan64(fb), na = is_nan64(fa);
   u64 r = nb && (!na || (fb & kFrac64) >= (fa & kFrac64)) ? fb : fa;
-  if (op == Op::mul || op == Op::div) r = (r & ~kSign64) | ((fb ^ fa) & kSign64);
+  if (op == Arith::mul || op == Arith::div) r = (r & ~kSign64) | ((fb ^ fa) & kSign64);
   return r;
 }
 
 template <typename T>
-T host_op(Op op, T x, T y) {
+T host_op(Arith op, T x, T y) {
   switch (op) {
-    case Op::add:
+    case Arith::add:
       return x + y;
-    case Op::sub:
+    case Arith::sub:
       return x - y;
-    case Op::mul:
+    case Arith::mul:
       return x * y;
-    case Op::div:
+    case Arith::div:
       return x / y;
   }
   return x;
@@ -374,7 +374,7 @@ T host_op(Op op, T x, T y) {
 
 // FB op FA, finite nonzero operands, round-to-nearest on the host: one IEEE operation in the
 // result's format. Only where both operands are exactly values of that format.
-Register host_arith(Op op, const Register& rb, const Register& ra, bool& error) {
+Register host_arith(Arith op, const Register& rb, const Register& ra, bool& error) {
   u64 bits;
   if (ra.length == Length::real64) {
     bits = from_double(host_op(op, to_double(as_real64(rb)), to_double(as_real64(ra))));
@@ -447,7 +447,7 @@ bool special_quotient(const Unpacked& b, const Unpacked& a, Length l, bool& erro
 
 // FB op FA in FA's length (the CWG requires both lengths equal; mixed lengths compute with both
 // values and round to FA's). Unrounded REAL32 operands (fpunoround) take part with all their bits.
-Register arith(Op op, const Register& rb, const Register& ra, Rounding m, bool& error) {
+Register arith(Arith op, const Register& rb, const Register& ra, Rounding m, bool& error) {
   const Length l = ra.length;
   const u64 fb = as_real64(rb), fa = as_real64(ra);
   if (is_nan64(fb) || is_nan64(fa)) {
@@ -458,11 +458,11 @@ Register arith(Op op, const Register& rb, const Register& ra, Rounding m, bool& 
   Unpacked a = unpack(fa);
   // Notebook.txt (T800 datasheet): "the flag is set if an input to a fp operation is infinite".
   if (b.kind == Kind::inf || a.kind == Kind::inf) error = true;
-  if (op == Op::sub) a.sign = !a.sign;
+  if (op == Arith::sub) a.sign = !a.sign;
   Register r;
-  if (op == Op::add || op == Op::sub) {
+  if (op == Arith::add || op == Arith::sub) {
     if (special_sum(b, a, l, m, error, r)) return r;
-  } else if (op == Op::mul) {
+  } else if (op == Arith::mul) {
     if (special_product(b, a, l, error, r)) return r;
   } else if (special_quotient(b, a, l, error, r)) {
     return r;
@@ -471,9 +471,9 @@ Register arith(Op op, const Register& rb, const Register& ra, Rounding m, bool& 
       l == Length::real64 || (rb.length == Length::real32 && !rb.unrounded && !ra.unrounded);
   if (m == Rounding::nearest && exact_operands) return host_arith(op, rb, ra, error);
   Exact e;
-  if (op == Op::mul) {
+  if (op == Arith::mul) {
     e = exact_product(b, a);
-  } else if (op == Op::div) {
+  } else if (op == Arith::div) {
     e = exact_quotient(b, a);
   } else {
     e = exact_sum(b, a);
@@ -584,22 +584,22 @@ void Fpu::load_bit32_as_real64(std::uint32_t v) {
 // instruction, so the rounding mode set before it applies to the operation.
 void Fpu::load_add_single(std::uint32_t bits) {
   push(make(Length::real32, bits));
-  replace_fa_fb(arith(Op::add, fb_, fa_, rounding_, error_));
+  replace_fa_fb(arith(Arith::add, fb_, fa_, rounding_, error_));
   done();
 }
 void Fpu::load_add_double(std::uint64_t bits) {
   push(make(Length::real64, bits));
-  replace_fa_fb(arith(Op::add, fb_, fa_, rounding_, error_));
+  replace_fa_fb(arith(Arith::add, fb_, fa_, rounding_, error_));
   done();
 }
 void Fpu::load_mul_single(std::uint32_t bits) {
   push(make(Length::real32, bits));
-  replace_fa_fb(arith(Op::mul, fb_, fa_, rounding_, error_));
+  replace_fa_fb(arith(Arith::mul, fb_, fa_, rounding_, error_));
   done();
 }
 void Fpu::load_mul_double(std::uint64_t bits) {
   push(make(Length::real64, bits));
-  replace_fa_fb(arith(Op::mul, fb_, fa_, rounding_, error_));
+  replace_fa_fb(arith(Arith::mul, fb_, fa_, rounding_, error_));
   done();
 }
 
@@ -645,19 +645,19 @@ std::uint32_t Fpu::store_int32() {
 }
 
 void Fpu::add() {
-  replace_fa_fb(arith(Op::add, fb_, fa_, rounding_, error_));
+  replace_fa_fb(arith(Arith::add, fb_, fa_, rounding_, error_));
   done();
 }
 void Fpu::sub() {
-  replace_fa_fb(arith(Op::sub, fb_, fa_, rounding_, error_));
+  replace_fa_fb(arith(Arith::sub, fb_, fa_, rounding_, error_));
   done();
 }
 void Fpu::mul() {
-  replace_fa_fb(arith(Op::mul, fb_, fa_, rounding_, error_));
+  replace_fa_fb(arith(Arith::mul, fb_, fa_, rounding_, error_));
   done();
 }
 void Fpu::div() {
-  replace_fa_fb(arith(Op::div, fb_, fa_, rounding_, error_));
+  replace_fa_fb(arith(Arith::div, fb_, fa_, rounding_, error_));
   done();
 }
 
@@ -676,7 +676,7 @@ std::uint32_t Fpu::rem_first() {
   if (x.kind == Kind::inf || y.kind == Kind::inf) error_ = true;  // t4 fp_remfirstdb
   if (x.kind == Kind::nan || y.kind == Kind::nan) {
     error_ = true;
-    rem = nan_in(l, propagate_nan(Op::add, as_real64(xr), as_real64(yr)));
+    rem = nan_in(l, propagate_nan(Arith::add, as_real64(xr), as_real64(yr)));
   } else if (x.kind == Kind::inf) {
     rem = nan_in(l, kNanRemFromInf);
   } else if (y.kind == Kind::zero) {

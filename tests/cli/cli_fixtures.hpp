@@ -2,6 +2,7 @@
 #pragma once
 
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -9,14 +10,29 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+#include "tests/test_files.hpp"
 #include "tests/test_paths.hpp"
 
 namespace cli_test {
+
+// A directory of its own for the running test, emptied: build/test-output/SUITE/NAME.
+inline std::string fresh_dir() {
+  namespace fs = std::filesystem;
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir =
+      fs::path(test_paths::binary_dir()) / "test-output" / info->test_suite_name() / info->name();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+using test_files::read_file;
 
 struct Output {
   int exit_code = -1;

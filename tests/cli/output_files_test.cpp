@@ -13,21 +13,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string fresh_dir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir =
-      fs::path(test_paths::binary_dir()) / "test-output" / info->test_suite_name() / info->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using cli_test::fresh_dir;
+using cli_test::read_file;
 
 std::size_t files_in(const std::string& dir) {
   return std::size_t(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
@@ -45,7 +32,7 @@ TEST(OutputFiles, ARunKilledWhileWritingItsTraceLeavesThePreviousTraceWhole) {
   kill(run, SIGKILL);
   waitpid(run, nullptr, 0);
   ASSERT_TRUE(writing) << "the run never started writing its trace";
-  EXPECT_EQ(read(trace), "the previous trace\n");
+  EXPECT_EQ(read_file(trace), "the previous trace\n");
 }
 
 TEST(OutputFiles, AFinishedRunReplacesTheTraceAndLeavesNoTemporaryFile) {
@@ -54,7 +41,7 @@ TEST(OutputFiles, AFinishedRunReplacesTheTraceAndLeavesNoTemporaryFile) {
   std::ofstream(trace) << "the previous trace\n";
   const auto o = cli_test::run("run configs/scenes/pingpong.toml --trace-csv " + trace + " 2>&1");
   ASSERT_EQ(o.exit_code, 0) << o.out;
-  EXPECT_EQ(read(trace).rfind("kind,name,state,start_us,end_us,label\n", 0), 0u);
+  EXPECT_EQ(read_file(trace).rfind("kind,name,state,start_us,end_us,label\n", 0), 0u);
   EXPECT_EQ(files_in(dir), 1u);
 }
 

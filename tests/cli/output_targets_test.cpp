@@ -29,21 +29,8 @@ using workloads::check_output_path;
 using workloads::OutputFile;
 using workloads::write_output_file;
 
-std::string fresh_dir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir =
-      fs::path(test_paths::binary_dir()) / "test-output" / info->test_suite_name() / info->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using cli_test::fresh_dir;
+using cli_test::read_file;
 
 // The names in `dir`, hidden ones included.
 std::vector<std::string> names_in(const std::string& dir) {
@@ -56,7 +43,8 @@ std::vector<std::string> names_in(const std::string& dir) {
 // Reads a FIFO to its end in a thread (opening it blocks until a writer opens it).
 class FifoReader {
  public:
-  explicit FifoReader(const std::string& fifo) : thread_([this, fifo] { text_ = read(fifo); }) {}
+  explicit FifoReader(const std::string& fifo)
+      : thread_([this, fifo] { text_ = read_file(fifo); }) {}
   std::string text() {
     thread_.join();
     return text_;
@@ -88,7 +76,7 @@ TEST(OutputTargets, ARegularFileIsReplacedWholeKeepingItsPermissions) {
   std::ofstream(file) << "old\n";
   chmod(file.c_str(), 0640);
   write_output_file(file, "new\n", "--x");
-  EXPECT_EQ(read(file), "new\n");
+  EXPECT_EQ(read_file(file), "new\n");
   struct stat st {};
   ASSERT_EQ(stat(file.c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0640u);
@@ -104,7 +92,7 @@ TEST(OutputTargets, ALinkStaysALinkAndItsTargetIsReplaced) {
   write_output_file(dir + "/link2.csv", "new\n", "--x");
   EXPECT_TRUE(fs::is_symlink(dir + "/link.csv"));
   EXPECT_TRUE(fs::is_symlink(dir + "/link2.csv"));
-  EXPECT_EQ(read(dir + "/real/target.csv"), "new\n");
+  EXPECT_EQ(read_file(dir + "/real/target.csv"), "new\n");
   EXPECT_EQ(names_in(dir + "/real"), std::vector<std::string>{"target.csv"});
 }
 
@@ -113,7 +101,7 @@ TEST(OutputTargets, ADanglingLinksTargetIsCreated) {
   fs::create_symlink("made.csv", dir + "/link.csv");
   write_output_file(dir + "/link.csv", "text\n", "--x");
   EXPECT_TRUE(fs::is_symlink(dir + "/link.csv"));
-  EXPECT_EQ(read(dir + "/made.csv"), "text\n");
+  EXPECT_EQ(read_file(dir + "/made.csv"), "text\n");
 }
 
 TEST(OutputTargets, AFifoIsWrittenThroughToItsReader) {
@@ -226,7 +214,7 @@ TEST(OutputTargets, AnUncommittedFileLeavesTheTargetAndNoTemporary) {
     OutputFile f(file, "--x");
     f.out() << "half";
   }
-  EXPECT_EQ(read(file), "old\n");
+  EXPECT_EQ(read_file(file), "old\n");
   EXPECT_EQ(names_in(dir), std::vector<std::string>{"out.csv"});
 }
 
@@ -252,7 +240,7 @@ void expect_signal_removes_temporary(int signal) {
   waitpid(child, &status, 0);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << status;
   EXPECT_EQ(names_in(dir), std::vector<std::string>{"out.csv"});
-  EXPECT_EQ(read(file), "old\n");
+  EXPECT_EQ(read_file(file), "old\n");
 }
 
 TEST(OutputTargets, SigtermRemovesTheTemporaryFile) {
@@ -291,7 +279,7 @@ TEST(OutputTargets, RunTracesFollowLinksAndWriteThroughFifos) {
   const std::string json = reader.text();
   ASSERT_EQ(o.exit_code, 0) << o.out;
   EXPECT_TRUE(fs::is_symlink(dir + "/trace.csv"));
-  EXPECT_EQ(read(dir + "/real.csv").rfind("kind,name,state,start_us,end_us,label\n", 0), 0u);
+  EXPECT_EQ(read_file(dir + "/real.csv").rfind("kind,name,state,start_us,end_us,label\n", 0), 0u);
   EXPECT_EQ(json.rfind("{\"displayTimeUnit\"", 0), 0u) << json.substr(0, 80);
   EXPECT_TRUE(is_fifo(dir + "/trace.json"));
   EXPECT_EQ(names_in(dir), (std::vector<std::string>{"real.csv", "trace.csv", "trace.json"}));
@@ -318,7 +306,7 @@ TEST(OutputTargets, AWorkloadCsvOnALinkReplacesTheLinksTarget) {
       "/q.csv 2>&1");
   ASSERT_EQ(o.exit_code, 0) << o.out;
   EXPECT_TRUE(fs::is_symlink(dir + "/q.csv"));
-  EXPECT_NE(read(dir + "/real.csv"), "old\n");
+  EXPECT_NE(read_file(dir + "/real.csv"), "old\n");
   EXPECT_EQ(names_in(dir), (std::vector<std::string>{"q.csv", "real.csv"}));
 }
 
@@ -343,7 +331,7 @@ TEST(OutputTargets, EmittedJobsAreWrittenThroughAFifoAndALink) {
       dir + "/jobs.txt --jobs-dir " + dir + "/results 2>&1");
   ASSERT_EQ(linked.exit_code, 0) << linked.out;
   EXPECT_TRUE(fs::is_symlink(dir + "/jobs.txt"));
-  EXPECT_NE(read(dir + "/real-jobs.txt").find("--point 1 -o"), std::string::npos);
+  EXPECT_NE(read_file(dir + "/real-jobs.txt").find("--point 1 -o"), std::string::npos);
 }
 
 TEST(OutputTargets, SweepOutputsThatCannotBeWrittenAreFoundBeforeAnyPoint) {

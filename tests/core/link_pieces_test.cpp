@@ -24,8 +24,8 @@ using t800::LinkProtocol;
 using Bytes = std::vector<std::uint8_t>;
 using SharedBytes = std::shared_ptr<Bytes>;
 
-constexpr int kValues = 8;
-using Values = std::array<double, kValues>;
+constexpr int kPieceValues = 8;
+using PieceValues = std::array<double, kPieceValues>;
 
 struct Split {
   LinkProtocol protocol = LinkProtocol::overlapped;
@@ -43,15 +43,15 @@ std::string describe(const Split& s) {
 }
 
 // P0 sends one message; P1 takes `first` bytes of it at once and the rest at `gap_us`.
-// Values: sender done, first piece's time and bytes, second piece's time and bytes, whether the
-// whether more of the message is pending after the second piece, and (7) a deadlock.
-Values split(const Split& s) {
+// PieceValues: sender done, first piece's time and bytes, second piece's time and bytes, whether
+// the whether more of the message is pending after the second piece, and (7) a deadlock.
+PieceValues split(const Split& s) {
   network::MachineOptions o = core_test::options(20, s.protocol);
   o.fidelity.links = s.fidelity;
   network::Machine m(core_test::chain(1), o);
   t800::Link& link = *m.links()[0].link;
   link.plan_packet_runs(s.packet_runs);
-  Values v;
+  PieceValues v;
   v.fill(-1);
   m.spawn(0, "send", t800::Priority::low, [&](network::Process& p) {
     link.transmit(0, {s.bytes, {}, "block"});
@@ -99,7 +99,7 @@ TEST(LinkPieces, TheSenderWaitsAfterTheBytesAnInputTakesUntilTheNextInput) {
                                   {LinkFidelity::automatic, true}})
       for (std::int64_t first : {1, 2, 10, 38, 39}) {
         Split s{protocol, fidelity, runs, 40, first, 100};
-        const Values v = core_test::in_child<kValues>([&] { return split(s); });
+        const PieceValues v = core_test::in_child<kPieceValues>([&] { return split(s); });
         ASSERT_EQ(v[7], 0) << describe(s) << ": deadlocked";
         ASSERT_GE(v[3], 0) << describe(s) << ": did not finish";
         EXPECT_EQ(v[2], double(first)) << describe(s);
@@ -126,10 +126,10 @@ TEST(LinkPieces, ByteByByteInputsTakeAMessageAsFastAsOneInput) {
   for (LinkProtocol protocol : {LinkProtocol::overlapped, LinkProtocol::t414}) {
     const Rules r(protocol);
     const std::int64_t bytes = 24;
-    const Values v = core_test::in_child<kValues>([&] {
+    const PieceValues v = core_test::in_child<kPieceValues>([&] {
       network::Machine m(core_test::chain(1), core_test::options(20, protocol));
       t800::Link& link = *m.links()[0].link;
-      Values out;
+      PieceValues out;
       out.fill(-1);
       m.spawn(0, "send", t800::Priority::low, [&](network::Process& p) {
         link.transmit(0, {bytes, {}, "block"});
@@ -169,14 +169,14 @@ TEST(LinkPieces, AFaultOnALaterPieceReachesTheSharedPayload) {
   const Rules r(LinkProtocol::overlapped);
   const std::int64_t bytes = 40, first = 10, hit = 25;  // byte 25 (from 1) is in the second piece
   const double gap_us = 100;
-  const Values v = core_test::in_child<kValues>([&] {
+  const PieceValues v = core_test::in_child<kPieceValues>([&] {
     network::Machine m(core_test::chain(1), core_test::options(20));
     t800::Link& link = *m.links()[0].link;
     // Byte `hit` is the first data packet starting after this.
     const double before_hit =
         gap_us + r.ack + r.process + double(hit - first - 2) * r.period - r.period / 2;
     link.corrupt_byte(0, sc_core::sc_time(before_hit, sc_core::SC_US), 0x5a, nullptr);
-    Values out;
+    PieceValues out;
     out.fill(-1);
     m.spawn(0, "send", t800::Priority::low, [&](network::Process&) {
       Bytes sent(bytes);

@@ -11,11 +11,11 @@
 namespace {
 
 using M = workloads::levels::Messages<float>;
-using C = M::C;
+using Real = M::C;
 
 // The bytes on the wire, by hand: one header word and four bytes per REAL32.
 TEST(PipelinePacket, ARowIsItsHeaderWordAndItsReals) {
-  const M::RowMessage row{3, {C(1.0f), C(2.0f)}};
+  const M::RowMessage row{3, {Real(1.0f), Real(2.0f)}};
   EXPECT_EQ(t800sim::wire_bytes<M::Packet>(M::to_packet(row)), 4 + 2 * 4);
   const M::RowMessage back = M::row_message_of(M::to_packet(row));
   EXPECT_EQ(back.index, 3u);
@@ -55,8 +55,8 @@ TEST(PipelinePacket, TheSystemIsItsRealsAloneAndFinishAWord) {
 // A pivot row with the scale (step 0, growth check): one more REAL, and it comes back apart.
 TEST(PipelinePacket, APivotRowCarriesTheScaleAsItsLastReal) {
   M::Pivot pivot;
-  pivot.row = {C(1.0f), C(0.5f)};
-  pivot.scale = C(8.0f);
+  pivot.row = {Real(1.0f), Real(0.5f)};
+  pivot.scale = Real(8.0f);
   pivot.with_scale = true;
   const M::PacketValue packet = M::to_packet(0, pivot);
   EXPECT_EQ(t800sim::wire_bytes<M::Packet>(packet), 4 + 3 * 4);
@@ -67,7 +67,7 @@ TEST(PipelinePacket, APivotRowCarriesTheScaleAsItsLastReal) {
 }
 
 TEST(PipelinePacket, ACorruptedByteLandsInTheRowNumberOrTheReal) {
-  const M::RowMessage row{3, {C(1.0f), C(2.0f)}};
+  const M::RowMessage row{3, {Real(1.0f), Real(2.0f)}};
   const M::PacketValue sent = M::to_packet(row);
   // Sending registers the packet's byte view with the simulator's faults.
   struct Wire : t800sim::detail::Wire {
@@ -88,10 +88,10 @@ TEST(PipelinePacket, ACorruptedByteLandsInTheRowNumberOrTheReal) {
 // Recovery's messages, by hand: the header word, four bytes per REAL32, the checksum word; a stop
 // the header word alone; a resend request a word per row or processor and the header word.
 TEST(PipelineCheckedPacket, BytesByHand) {
-  M::CheckedRow row{2, 3, false, {C(1.0f), C(2.0f), C(3.0f)}, 0};
+  M::CheckedRow row{2, 3, false, {Real(1.0f), Real(2.0f), Real(3.0f)}, 0};
   row.checksum = row.sum();
   EXPECT_EQ(t800sim::wire_bytes<M::Checked>(M::to_checked(row)), 4 + 3 * 4 + 4);
-  M::CheckedPivot pivot{0, false, true, {C(1.0f), C(0.5f)}, C(8.0f), 0};
+  M::CheckedPivot pivot{0, false, true, {Real(1.0f), Real(0.5f)}, Real(8.0f), 0};
   // Step 0 with the growth check: the scale travels, one more REAL.
   EXPECT_EQ(t800sim::wire_bytes<M::Checked>(M::to_checked(pivot, true)), 4 + 3 * 4 + 4);
   EXPECT_EQ(t800sim::wire_bytes<M::Checked>(M::to_checked(pivot, false)), 4 + 2 * 4 + 4);
@@ -103,7 +103,7 @@ TEST(PipelineCheckedPacket, BytesByHand) {
 }
 
 TEST(PipelineCheckedPacket, WhatALevelHoldsSurvivesTheWire) {
-  M::CheckedRow row{2, 3, true, {C(1.0f)}, 0};
+  M::CheckedRow row{2, 3, true, {Real(1.0f)}, 0};
   row.checksum = row.sum();
   const M::CheckedValue sent = M::to_checked(row);
   EXPECT_FALSE(M::is_pivot(sent));
@@ -112,7 +112,7 @@ TEST(PipelineCheckedPacket, WhatALevelHoldsSurvivesTheWire) {
   EXPECT_EQ(back.index, 3u);
   EXPECT_TRUE(back.bad);
   EXPECT_EQ(back.checksum, row.checksum);
-  M::CheckedPivot pivot{0, false, true, {C(1.0f), C(0.5f)}, C(8.0f), 0};
+  M::CheckedPivot pivot{0, false, true, {Real(1.0f), Real(0.5f)}, Real(8.0f), 0};
   const M::CheckedPivot p = M::checked_pivot_of(M::to_checked(pivot, true), true);
   EXPECT_TRUE(M::is_pivot(M::to_checked(pivot, true)));
   EXPECT_TRUE(p.forward);
@@ -130,13 +130,13 @@ TEST(PipelineCheckedPacket, WhatALevelHoldsSurvivesTheWire) {
   EXPECT_EQ(r.lost, std::vector<int>{1});
   EXPECT_EQ(r.avoid, std::vector<int>{2});
   // L3's reduced rows on the same channel are not requests.
-  EXPECT_FALSE(M::is_resend(M::to_checked(M::ReturnedRow{true, {C(1.0f)}, 1})));
+  EXPECT_FALSE(M::is_resend(M::to_checked(M::ReturnedRow{true, {Real(1.0f)}, 1})));
 }
 
 // A changed byte: in the header word, the row's number (3 ^ 1); in the last word, the checksum,
 // which then no longer matches.
 TEST(PipelineCheckedPacket, ACorruptedByteLandsInTheNumberOrTheChecksum) {
-  M::CheckedRow row{1, 3, false, {C(1.0f), C(2.0f)}, 0};
+  M::CheckedRow row{1, 3, false, {Real(1.0f), Real(2.0f)}, 0};
   row.checksum = row.sum();
   struct Wire : t800sim::detail::Wire {
     void send(std::int64_t, std::any v) override { value = std::move(v); }

@@ -36,7 +36,7 @@ double link_us(double bytes) {
 constexpr double kInstructionsUs = 100 * kCycleUs;
 
 // The scene's results, recomputed here: every element halved and s + 1 added at stage s, in float.
-std::string sequential_checksum(int stages, int reals, int rounds) {
+std::string sequential_stages_checksum(int stages, int reals, int rounds) {
   std::vector<float> all;
   for (int r = 0; r < rounds; ++r)
     for (int e = 0; e < reals; ++e) {
@@ -54,7 +54,7 @@ double stage_us(const nlohmann::json& w) {
 TEST(FixedStages, ResultsAreTheStagesAppliedInOrderBufferedOrNot) {
   for (const char* buffered : {"false", "true"}) {
     const auto w = run(std::string(" --set workload.buffered=") + buffered);
-    EXPECT_EQ(w["results_checksum"], sequential_checksum(4, 16, 20)) << buffered;
+    EXPECT_EQ(w["results_checksum"], sequential_stages_checksum(4, 16, 20)) << buffered;
   }
 }
 
@@ -110,7 +110,7 @@ TEST(FixedStages, BufferedStagesOverlapLinksAndCompute) {
   EXPECT_GE(period, tl + copy);
   EXPECT_LE(period, tl + copy + kInstructionsUs);
   EXPECT_LT(period, tl + stage_us(links) + copy);  // the stage's 10 us are not in it
-  EXPECT_EQ(links["results_checksum"], sequential_checksum(4, 64, 20));
+  EXPECT_EQ(links["results_checksum"], sequential_stages_checksum(4, 64, 20));
 }
 
 TEST(FixedStages, MoreStagesThanProcessorsIsAnError) {

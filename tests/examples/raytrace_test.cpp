@@ -33,7 +33,7 @@ nlohmann::json farm(const std::string& family, int workers, const std::string& e
 // line: the checksum the program reports, computed here from a sequential trace in plain float (or
 // double, its colours rounded to float as they travel).
 template <class Scalar = float>
-std::string sequential_checksum(int width, int height, int reflections) {
+std::string sequential_image_checksum(int width, int height, int reflections) {
   std::vector<float> image(std::size_t(3 * width * height));
   for (int line = 0; line < height; ++line) {
     const std::vector<float> rgb = raytrace::trace_line<Scalar>(line, width, height, reflections);
@@ -62,7 +62,7 @@ int lines_traced(const nlohmann::json& workload) {
 // Every worker count the issue asks for, on a tree and on a chain: a smaller image (40 lines of
 // 16 pixels) keeps the 32 runs short; at 16 workers some take 2 lines and some 3.
 TEST(RaytraceFarm, TheImageIsTheSequentialTraceAtEveryWorkerCountOnATreeAndAChain) {
-  const std::string expected = sequential_checksum(16, 40, 2);
+  const std::string expected = sequential_image_checksum(16, 40, 2);
   for (const std::string family : {"tree", "chain"})
     for (int workers = 1; workers <= 16; ++workers) {
       const nlohmann::json w =
@@ -75,10 +75,10 @@ TEST(RaytraceFarm, TheImageIsTheSequentialTraceAtEveryWorkerCountOnATreeAndAChai
 // The full image, and fewer lines than workers (some workers get none).
 TEST(RaytraceFarm, TheImageIsTheSequentialTraceAtFullSizeAndWithIdleWorkers) {
   const nlohmann::json full = farm("tree", 5)["workload"];
-  EXPECT_EQ(full["image_checksum"], sequential_checksum(64, 64, 2));
+  EXPECT_EQ(full["image_checksum"], sequential_image_checksum(64, 64, 2));
   EXPECT_EQ(lines_traced(full), 64);
   const nlohmann::json few = farm("chain", 12, " --set workload.height=5")["workload"];
-  EXPECT_EQ(few["image_checksum"], sequential_checksum(64, 5, 2));
+  EXPECT_EQ(few["image_checksum"], sequential_image_checksum(64, 5, 2));
   EXPECT_EQ(lines_traced(few), 5);
 }
 
@@ -116,7 +116,7 @@ from = "P0.link3"
 to = "P3.link0"
 )";
   const nlohmann::json w = run_json(path)["workload"];
-  EXPECT_EQ(w["image_checksum"], sequential_checksum(64, 64, 2));
+  EXPECT_EQ(w["image_checksum"], sequential_image_checksum(64, 64, 2));
   std::map<std::string, int> lines;
   for (const auto& worker : w["per_worker"])
     lines[worker["processor"].get<std::string>()] = worker["lines"].get<int>();
@@ -164,7 +164,7 @@ TEST(RaytraceFarm, PrecisionIsStatedAndUsed) {
                        r64 = farm("tree", 3, " --set workload.precision=real64");
   EXPECT_EQ(r32["setting"]["precision"]["value"], "real32");
   EXPECT_EQ(r64["setting"]["precision"]["value"], "real64");
-  EXPECT_EQ(r64["workload"]["image_checksum"], sequential_checksum<double>(64, 64, 2));
+  EXPECT_EQ(r64["workload"]["image_checksum"], sequential_image_checksum<double>(64, 64, 2));
   EXPECT_NE(r64["workload"]["image_checksum"], r32["workload"]["image_checksum"]);
   // REAL64 arithmetic takes the FPU longer (datasheet: fpmul 18 vs 11 cycles, fpdiv 31 vs 16).
   EXPECT_GT(r64["workload"]["line_cycles_max"].get<double>(),

@@ -26,7 +26,7 @@ nlohmann::json product(const std::string& sets = "") {
 
 // C = A.B by the textbook loop in float, each element summed over k in order, hashed (FNV-1a, 64
 // bit) over its bytes row by row.
-std::string sequential_checksum(std::size_t n) {
+std::string sequential_product_checksum(std::size_t n) {
   const std::vector<float> a = systolic::matrix(n, 1), b = systolic::matrix(n, 2);
   std::uint64_t h = 14695981039346656037ull;
   for (std::size_t i = 0; i < n; ++i)
@@ -43,7 +43,7 @@ std::string sequential_checksum(std::size_t n) {
 }
 
 TEST(SystolicMatmul, CIsTheSequentialProductOnAnyNetwork) {
-  const std::string expected = sequential_checksum(32);
+  const std::string expected = sequential_product_checksum(32);
   const nlohmann::json mesh = product()["workload"];
   EXPECT_EQ(mesh["c_checksum"], expected);
   EXPECT_LT(mesh["max_abs_error"].get<double>(), 1e-5);       // against double precision (Eigen)

@@ -3,6 +3,7 @@
 // layouts in iserver 1.50's filec.c: INT32 ids, INT16 counts, slices as INT16 count + bytes, all
 // little-endian; replies padded with zeros to an even length of at least 6.
 #include "t800/host/sp_server.hpp"
+#include "tests/host/sp_bytes.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -24,57 +25,25 @@ namespace t800::host {
 namespace {
 
 namespace fs = std::filesystem;
-using Bytes = std::vector<std::uint8_t>;
+using namespace sp_bytes;
 
-Bytes cat(std::initializer_list<Bytes> parts) {
-  Bytes out;
-  for (const Bytes& part : parts) out.insert(out.end(), part.begin(), part.end());
-  return out;
-}
-Bytes text(const std::string& s) {
-  return Bytes(s.begin(), s.end());
-}
-// A slice: INT16 count, then the bytes.
-Bytes slice(const std::string& s) {
-  return cat(
-      {Bytes{static_cast<std::uint8_t>(s.size() & 0xff), static_cast<std::uint8_t>(s.size() >> 8)},
-       text(s)});
-}
-Bytes le32(std::uint32_t v) {
-  return Bytes{static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v >> 8),
-               static_cast<std::uint8_t>(v >> 16), static_cast<std::uint8_t>(v >> 24)};
-}
-// The hostio library pads every request to an even length (the server must not care).
-Bytes padded(Bytes body) {
-  if (body.size() % 2 != 0) body.push_back(0);
-  return body;
-}
 Bytes open_request(const std::string& name, std::uint8_t type, std::uint8_t mode) {
-  return padded(cat({Bytes{10}, slice(name), Bytes{type, mode}}));
+  return padded_even(cat({Bytes{10}, slice(name), Bytes{type, mode}}));
 }
 Bytes id_request(std::uint8_t tag, std::uint32_t id) {
-  return padded(cat({Bytes{tag}, le32(id)}));
+  return padded_even(cat({Bytes{tag}, le32(id)}));
 }
 Bytes read_request(std::uint8_t tag, std::uint32_t id, std::uint16_t count) {
   return cat({Bytes{tag}, le32(id),
               Bytes{static_cast<std::uint8_t>(count), static_cast<std::uint8_t>(count >> 8)}});
 }
 Bytes write_request(std::uint8_t tag, std::uint32_t id, const std::string& data) {
-  return padded(cat({Bytes{tag}, le32(id), slice(data)}));
+  return padded_even(cat({Bytes{tag}, le32(id), slice(data)}));
 }
 Bytes seek_request(std::uint32_t id, std::int32_t offset, std::int32_t origin) {
   return cat({Bytes{17}, le32(id), le32(static_cast<std::uint32_t>(offset)),
               le32(static_cast<std::uint32_t>(origin))});
 }
-
-const Bytes kOk = {0, 0, 0, 0, 0, 0};
-const Bytes kError = {129, 0, 0, 0, 0, 0};
-const Bytes kNoPrivilege = {131, 0, 0, 0, 0, 0};
-const Bytes kNoResource = {132, 0, 0, 0, 0, 0};
-const Bytes kNoFile = {133, 0, 0, 0, 0, 0};
-const Bytes kBadId = {135, 0, 0, 0, 0, 0};
-const Bytes kNoPosition = {136, 0, 0, 0, 0, 0};
-const Bytes kBadParameters = {141, 0, 0, 0, 0, 0};
 
 Bytes opened(std::uint8_t id) {
   return Bytes{0, id, 0, 0, 0, 0};
@@ -173,15 +142,15 @@ TEST_F(SpServerFiles, RoundTrip) {
   EXPECT_EQ(contents(root_ / "lines.txt"), "one\n\n");
 
   // RENAME "data.bin" -> "sub/moved.bin"; the old name no longer opens.
-  EXPECT_EQ(handle(padded(cat({Bytes{22}, slice("data.bin"), slice("sub/moved.bin")}))), kOk);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{22}, slice("data.bin"), slice("sub/moved.bin")}))), kOk);
   EXPECT_EQ(handle(open_request("data.bin", 1, 1)), kError);
   EXPECT_EQ(contents(root_ / "sub" / "moved.bin"), "hello\nworld\n");
   // REMOVE it; a second REMOVE finds no file (ER_NOFILE).
-  EXPECT_EQ(handle(padded(cat({Bytes{21}, slice("sub/moved.bin")}))), kOk);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{21}, slice("sub/moved.bin")}))), kOk);
   EXPECT_FALSE(fs::exists(root_ / "sub" / "moved.bin"));
-  EXPECT_EQ(handle(padded(cat({Bytes{21}, slice("sub/moved.bin")}))), kNoFile);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{21}, slice("sub/moved.bin")}))), kNoFile);
   // RENAME of a file that is not there fails.
-  EXPECT_EQ(handle(padded(cat({Bytes{22}, slice("nothing"), slice("else")}))), kError);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{22}, slice("nothing"), slice("else")}))), kError);
 }
 
 TEST_F(SpServerFiles, GetsLimitAndLongLines) {
@@ -271,7 +240,7 @@ TEST_F(SpServerFiles, FerrorReportsTheFailure) {
   // Writing to an input file writes nothing: OK, 0 written (as fwrite), and sets the error.
   EXPECT_EQ(handle(write_request(13, 3, "y")), (Bytes{0, 0, 0, 0, 0, 0}));
   const std::string message = std::strerror(EBADF);
-  EXPECT_EQ(handle(id_request(20, 3)), padded(cat({Bytes{0}, le32(EBADF), slice(message)})));
+  EXPECT_EQ(handle(id_request(20, 3)), padded_even(cat({Bytes{0}, le32(EBADF), slice(message)})));
   EXPECT_EQ(handle(id_request(11, 3)), kOk);
 }
 
@@ -330,10 +299,10 @@ TEST_F(SpServerFiles, WrongDirectionOnPredefinedStreams) {
   // fread would); FERROR then reports EBADF.
   EXPECT_EQ(handle(write_request(13, 0, "x")), (Bytes{0, 0, 0, 0, 0, 0}));
   EXPECT_EQ(handle(id_request(20, 0)),
-            padded(cat({Bytes{0}, le32(EBADF), slice(std::strerror(EBADF))})));
+            padded_even(cat({Bytes{0}, le32(EBADF), slice(std::strerror(EBADF))})));
   EXPECT_EQ(handle(read_request(12, 2, 5)), (Bytes{0, 0, 0, 0, 0, 0}));
   EXPECT_EQ(handle(id_request(20, 2)),
-            padded(cat({Bytes{0}, le32(EBADF), slice(std::strerror(EBADF))})));
+            padded_even(cat({Bytes{0}, le32(EBADF), slice(std::strerror(EBADF))})));
   EXPECT_EQ(handle(id_request(20, 1)), kError);
   EXPECT_EQ(out_.str(), "");
 }
@@ -346,20 +315,22 @@ TEST_F(SpServerFiles, RefusesNamesOutsideTheRoot) {
         std::string("sub/../f"), std::string("./../x"), std::string("sub//../../x")}) {
     EXPECT_EQ(handle(open_request(name, 1, 1)), kNoPrivilege) << name;
     EXPECT_EQ(handle(open_request(name, 1, 2)), kNoPrivilege) << name;
-    EXPECT_EQ(handle(padded(cat({Bytes{21}, slice(name)}))), kNoPrivilege) << name;
-    EXPECT_EQ(handle(padded(cat({Bytes{22}, slice(name), slice("inside")}))), kNoPrivilege) << name;
-    EXPECT_EQ(handle(padded(cat({Bytes{22}, slice("inside"), slice(name)}))), kNoPrivilege) << name;
+    EXPECT_EQ(handle(padded_even(cat({Bytes{21}, slice(name)}))), kNoPrivilege) << name;
+    EXPECT_EQ(handle(padded_even(cat({Bytes{22}, slice(name), slice("inside")}))), kNoPrivilege)
+        << name;
+    EXPECT_EQ(handle(padded_even(cat({Bytes{22}, slice("inside"), slice(name)}))), kNoPrivilege)
+        << name;
   }
   EXPECT_EQ(contents(outside_ / "secret"), "outside");
   EXPECT_FALSE(fs::exists(base_ / "x"));
   // The root itself cannot be removed or renamed.
-  EXPECT_EQ(handle(padded(cat({Bytes{21}, slice(".")}))), kNoPrivilege);
-  EXPECT_EQ(handle(padded(cat({Bytes{22}, slice("./"), slice("y")}))), kNoPrivilege);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{21}, slice(".")}))), kNoPrivilege);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{22}, slice("./"), slice("y")}))), kNoPrivilege);
   EXPECT_TRUE(fs::is_directory(root_));
   // A NUL inside the name, or an empty name: the error result.
   EXPECT_EQ(handle(open_request(std::string("ok\0/../../x", 11), 1, 2)), kError);
-  EXPECT_EQ(handle(padded(cat({Bytes{21}, slice("")}))), kError);
-  EXPECT_EQ(handle(padded(cat({Bytes{22}, slice(""), slice("a")}))), kError);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{21}, slice("")}))), kError);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{22}, slice(""), slice("a")}))), kError);
 }
 
 TEST_F(SpServerFiles, RefusesSymbolicLinksThatLeadOut) {
@@ -375,19 +346,20 @@ TEST_F(SpServerFiles, RefusesSymbolicLinksThatLeadOut) {
   EXPECT_EQ(handle(open_request("dangling", 1, 2)), kNoPrivilege);
   EXPECT_EQ(handle(open_request("loop", 1, 1)), kNoPrivilege);
   EXPECT_EQ(handle(open_request("sub/up/secret", 1, 1)), kNoPrivilege);
-  EXPECT_EQ(handle(padded(cat({Bytes{21}, slice("out/secret")}))), kNoPrivilege);
-  EXPECT_EQ(handle(padded(cat({Bytes{22}, slice("out/secret"), slice("mine")}))), kNoPrivilege);
-  EXPECT_EQ(handle(padded(cat({Bytes{22}, slice("sub/f"), slice("out/f")}))), kNoPrivilege);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{21}, slice("out/secret")}))), kNoPrivilege);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{22}, slice("out/secret"), slice("mine")}))),
+            kNoPrivilege);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{22}, slice("sub/f"), slice("out/f")}))), kNoPrivilege);
   EXPECT_FALSE(fs::exists(outside_ / "created"));
   EXPECT_FALSE(fs::exists(outside_ / "new"));
   EXPECT_EQ(contents(outside_ / "secret"), "outside");
 
   // REMOVE and RENAME act on a link itself (as C's remove and rename): it lies inside the root,
   // so removing it is allowed and leaves its target alone.
-  EXPECT_EQ(handle(padded(cat({Bytes{21}, slice("escape")}))), kOk);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{21}, slice("escape")}))), kOk);
   EXPECT_FALSE(fs::is_symlink(fs::symlink_status(root_ / "escape")));
   EXPECT_EQ(contents(outside_ / "secret"), "outside");
-  EXPECT_EQ(handle(padded(cat({Bytes{21}, slice("dangling")}))), kOk);
+  EXPECT_EQ(handle(padded_even(cat({Bytes{21}, slice("dangling")}))), kOk);
 }
 
 TEST_F(SpServerFiles, FollowsSymbolicLinksThatStayInside) {

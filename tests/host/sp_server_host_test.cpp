@@ -2,6 +2,7 @@
 // tags, malformed requests, and a whole session through the reassembler. Layouts from iserver
 // 1.50's hostc.c and serverc.c; replies padded with zeros to an even length of at least 6.
 #include "t800/host/sp_server.hpp"
+#include "tests/host/sp_bytes.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -19,36 +20,7 @@ namespace t800::host {
 namespace {
 
 namespace fs = std::filesystem;
-using Bytes = std::vector<std::uint8_t>;
-
-Bytes cat(std::initializer_list<Bytes> parts) {
-  Bytes out;
-  for (const Bytes& part : parts) out.insert(out.end(), part.begin(), part.end());
-  return out;
-}
-Bytes text(const std::string& s) {
-  return Bytes(s.begin(), s.end());
-}
-Bytes slice(const std::string& s) {
-  return cat(
-      {Bytes{static_cast<std::uint8_t>(s.size() & 0xff), static_cast<std::uint8_t>(s.size() >> 8)},
-       text(s)});
-}
-Bytes le32(std::uint32_t v) {
-  return Bytes{static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v >> 8),
-               static_cast<std::uint8_t>(v >> 16), static_cast<std::uint8_t>(v >> 24)};
-}
-Bytes padded(Bytes body) {
-  if (body.size() % 2 != 0) body.push_back(0);
-  if (body.size() < 6) body.resize(6, 0);
-  return body;
-}
-
-const Bytes kOk = {0, 0, 0, 0, 0, 0};
-const Bytes kNotImplemented = {1, 0, 0, 0, 0, 0};
-const Bytes kError = {129, 0, 0, 0, 0, 0};
-const Bytes kNoPrivilege = {131, 0, 0, 0, 0, 0};
-const Bytes kBadParameters = {141, 0, 0, 0, 0, 0};
+using namespace sp_bytes;
 
 // A server on a temporary root with every host hook replaced.
 class SpServerHost : public ::testing::Test {
@@ -115,16 +87,16 @@ TEST_F(SpServerHost, ANewlineIsTheReturnKeyWhenAsked) {
 TEST_F(SpServerHost, GetEnvListedVariablesOnly) {
   options_.environment.fixed = {{"IBOARDSIZE", "#200000"}};
   // GETENV (32), slice name -> OK, slice value.
-  EXPECT_EQ(handle(padded(cat({Bytes{32}, slice("IBOARDSIZE")}))),
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{32}, slice("IBOARDSIZE")}))),
             (Bytes{0, 7, 0, '#', '2', '0', '0', '0', '0', '0'}));
-  EXPECT_EQ(handle(padded(cat({Bytes{32}, slice("ISEARCH")}))),
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{32}, slice("ISEARCH")}))),
             (Bytes{0, 6, 0, '/', 'l', 'i', 'b', 's', '/', 0}));
   // HOME is in the host environment but not listed: not revealed, not even looked up.
-  EXPECT_EQ(handle(padded(cat({Bytes{32}, slice("HOME")}))), kError);
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{32}, slice("HOME")}))), kError);
   EXPECT_EQ(asked_, (std::vector<std::string>{"ISEARCH"}));
   // A listed variable the host does not have, and an empty name: the error result.
-  EXPECT_EQ(handle(padded(cat({Bytes{32}, slice("ITERM")}))), kError);
-  EXPECT_EQ(handle(padded(cat({Bytes{32}, slice("")}))), kError);
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{32}, slice("ITERM")}))), kError);
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{32}, slice("")}))), kError);
 }
 
 TEST_F(SpServerHost, GetEnvAllAndNone) {
@@ -132,20 +104,20 @@ TEST_F(SpServerHost, GetEnvAllAndNone) {
   options_.environment.fixed = {{"HOME", "/fixed"}};
   {
     SpServer all(options_, host_);
-    EXPECT_EQ(all.handle(padded(cat({Bytes{32}, slice("HOME")}))),
-              padded(cat({Bytes{0}, slice("/fixed")})));  // fixed first
-    EXPECT_EQ(all.handle(padded(cat({Bytes{32}, slice("ISEARCH")}))),
-              padded(cat({Bytes{0}, slice("/libs/")})));
+    EXPECT_EQ(all.handle(padded_to_six(cat({Bytes{32}, slice("HOME")}))),
+              padded_to_six(cat({Bytes{0}, slice("/fixed")})));  // fixed first
+    EXPECT_EQ(all.handle(padded_to_six(cat({Bytes{32}, slice("ISEARCH")}))),
+              padded_to_six(cat({Bytes{0}, slice("/libs/")})));
     // Too long for one reply: clipped to 507 and answered with the error result, as hostc.c.
-    const Bytes reply = all.handle(padded(cat({Bytes{32}, slice("LONG")})));
+    const Bytes reply = all.handle(padded_to_six(cat({Bytes{32}, slice("LONG")})));
     EXPECT_EQ(reply, cat({Bytes{129, 0xfb, 0x01}, Bytes(507, 'v')}));
   }
   options_.environment.mode = SpEnvironmentPolicy::Mode::kNone;
   SpServer none(options_, host_);
   asked_.clear();
-  EXPECT_EQ(none.handle(padded(cat({Bytes{32}, slice("ISEARCH")}))), kError);
-  EXPECT_EQ(none.handle(padded(cat({Bytes{32}, slice("HOME")}))),
-            padded(cat({Bytes{0}, slice("/fixed")})));
+  EXPECT_EQ(none.handle(padded_to_six(cat({Bytes{32}, slice("ISEARCH")}))), kError);
+  EXPECT_EQ(none.handle(padded_to_six(cat({Bytes{32}, slice("HOME")}))),
+            padded_to_six(cat({Bytes{0}, slice("/fixed")})));
   EXPECT_TRUE(asked_.empty());
 }
 
@@ -168,8 +140,8 @@ TEST(SpServerClock, HostClockIsNearNow) {
 
 TEST_F(SpServerHost, SystemRefusedUnlessAllowed) {
   // SYSTEM (34), slice command -> refused: ER_NOPRIV, and nothing runs.
-  EXPECT_EQ(handle(padded(cat({Bytes{34}, slice("rm -rf x")}))), kNoPrivilege);
-  EXPECT_EQ(handle(padded(cat({Bytes{34}, slice("")}))), kNoPrivilege);
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{34}, slice("rm -rf x")}))), kNoPrivilege);
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{34}, slice("")}))), kNoPrivilege);
   EXPECT_TRUE(commands_.empty());
 }
 
@@ -177,14 +149,14 @@ TEST_F(SpServerHost, SystemWhenAllowed) {
   options_.allow_system = true;
   system_status_ = 256;  // "exit 1" as system() reports it
   // -> OK, INT32 the raw status.
-  EXPECT_EQ(handle(padded(cat({Bytes{34}, slice("exit 1")}))), (Bytes{0, 0, 1, 0, 0, 0}));
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{34}, slice("exit 1")}))), (Bytes{0, 0, 1, 0, 0, 0}));
   EXPECT_EQ(commands_, (std::vector<std::string>{"exit 1"}));
   // The empty command asks for a shell: OK when it runs, the error result when it does not.
   system_status_ = 0;
-  EXPECT_EQ(handle(padded(cat({Bytes{34}, slice("")}))), kOk);
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{34}, slice("")}))), kOk);
   system_status_ = 127;
-  EXPECT_EQ(handle(padded(cat({Bytes{34}, slice("")}))), (Bytes{129, 127, 0, 0, 0, 0}));
-  EXPECT_EQ(handle(padded(cat({Bytes{34}, slice(std::string("a\0b", 3))}))), kError);
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{34}, slice("")}))), (Bytes{129, 127, 0, 0, 0, 0}));
+  EXPECT_EQ(handle(padded_to_six(cat({Bytes{34}, slice(std::string("a\0b", 3))}))), kError);
   EXPECT_EQ(commands_.size(), 3u);
 }
 
@@ -204,7 +176,7 @@ TEST_F(SpServerHost, ExitStatusMapping) {
   for (const Case c : {Case{static_cast<std::uint32_t>(-999999999), 255}, Case{0, 0}, Case{1, 1},
                        Case{42, 42}, Case{0xffffffffu, 255}, Case{256, 255}}) {
     SpServer fresh(options_, host_);
-    EXPECT_EQ(fresh.handle(padded(cat({Bytes{35}, le32(c.status)}))), kOk);
+    EXPECT_EQ(fresh.handle(padded_to_six(cat({Bytes{35}, le32(c.status)}))), kOk);
     EXPECT_TRUE(fresh.exited());
     EXPECT_EQ(fresh.exit_code(), c.code) << c.status;
   }
@@ -215,9 +187,9 @@ TEST_F(SpServerHost, CommandLine) {
   options_.program_args = {"-x", "two words", "tab\there"};
   // COMMANDLINE (40), BYTE all: 0 the program's arguments, 1 the whole line.
   EXPECT_EQ(handle(Bytes{40, 0, 0, 0, 0, 0}),
-            padded(cat({Bytes{0}, slice("-x \"two words\" \"tab\there\"")})));
+            padded_to_six(cat({Bytes{0}, slice("-x \"two words\" \"tab\there\"")})));
   EXPECT_EQ(handle(Bytes{40, 1, 0, 0, 0, 0}),
-            padded(cat({Bytes{0}, slice("prog.btl -x \"two words\" \"tab\there\"")})));
+            padded_to_six(cat({Bytes{0}, slice("prog.btl -x \"two words\" \"tab\there\"")})));
   // Any non-zero byte asks for the whole line (serverc.c: get_8() ? true : false).
   EXPECT_EQ(handle(Bytes{40, 7, 0, 0, 0, 0}), handle(Bytes{40, 1, 0, 0, 0, 0}));
 }
@@ -332,7 +304,7 @@ TEST_F(SpServerHost, AnyBytesGiveAWellFormedReply) {
 TEST_F(SpServerHost, SessionThroughTheReassembler) {
   // What a program's link output looks like: framed requests, split anywhere.
   std::vector<Bytes> requests = {
-      padded(cat({Bytes{13}, le32(1), slice("Hello, world\n")})),
+      padded_to_six(cat({Bytes{13}, le32(1), slice("Hello, world\n")})),
       Bytes{42, 0, 0, 0, 0, 0},
       Bytes{35, 0xff, 0xc9, 0x9a, 0x3b, 0},
   };

@@ -11,17 +11,10 @@ using iss_test::TestMachine;
 using iss_test::Word;
 using t800::iss::StopReason;
 
+using iss_test::Stack;
 // Runs `body` (which leaves its results on the stack: A, B, C) and returns A, B, C and Error.
-struct Stack {
-  Word a, b, c;
-  bool error;
-};
 Stack run(const std::string& body) {
-  TestMachine m;
-  m.boot("ajw 16\n" + body + "\nstopp\n");
-  EXPECT_EQ(m.run(), StopReason::idle);
-  const auto& r = m.core.registers();
-  return {r.a, r.b, r.c, r.error};
+  return iss_test::run_stack(body);
 }
 
 TEST(IssInteger, AddSubtractMultiplyCheckOverflow) {

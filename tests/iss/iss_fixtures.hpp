@@ -3,6 +3,8 @@
 // simulated time pass to the next timer when it is idle.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <deque>
 #include <string>
 #include <vector>
@@ -109,5 +111,23 @@ struct TestMachine {
   t800::iss::Core core;
   ScriptedLinks links;
 };
+
+// A body's results as it leaves them on the stack (A, B, C) and the Error flag.
+struct Stack {
+  Word a, b, c;
+  bool error;
+};
+
+// Runs `body` after `ajw 16` (so workspace words 0..15 are the body's), then stopp, on a fresh
+// processor of `type`; the run must end idle (`body` names it in a failure).
+inline Stack run_stack(const std::string& body,
+                       t800::ProcessorType type = t800::ProcessorType::T800_20,
+                       std::int64_t installed = 1 << 20) {
+  TestMachine m(type, installed);
+  m.boot("ajw 16\n" + body + "\nstopp\n");
+  EXPECT_EQ(m.run(), t800::iss::StopReason::idle) << body;
+  const auto& r = m.core.registers();
+  return {r.a, r.b, r.c, r.error};
+}
 
 }  // namespace iss_test

@@ -28,10 +28,7 @@ using t800::iss::StopReason;
 constexpr auto kT414 = t800::ProcessorType::T414_20;
 constexpr std::int64_t kMemory = 1 << 16;
 
-struct Stack {
-  Word a, b, c;
-  bool error;
-};
+using iss_test::Stack;
 
 std::string hex(Word w) {
   char text[16];
@@ -40,12 +37,8 @@ std::string hex(Word w) {
 }
 
 // Runs `body` on a T414 after `ajw 16` (workspace word 0 is postnormsn's exponent).
-Stack run(const std::string& body) {
-  TestMachine m(kT414, kMemory);
-  m.boot("ajw 16\n" + body + "\nstopp\n");
-  EXPECT_EQ(m.run(), StopReason::idle) << body;
-  const auto& r = m.core.registers();
-  return {r.a, r.b, r.c, r.error};
+Stack run_t414(const std::string& body) {
+  return iss_test::run_stack(body, kT414, kMemory);
 }
 
 float as_float(Word w) {
@@ -61,7 +54,7 @@ Word bits(float f) {
 
 // unpacksn with B = 5 beforehand, so C = 4 * 5 + type.
 Stack unpack(Word packed) {
-  return run("ldc 5\nldc " + hex(packed) + "\nunpacksn");
+  return run_t414("ldc 5\nldc " + hex(packed) + "\nunpacksn");
 }
 
 TEST(IssT414Float, UnpackNormalNumbers) {
@@ -130,7 +123,7 @@ TEST(IssT414Float, UnpackedPartsGiveTheHostsValue) {
 }
 
 TEST(IssT414Float, LoadInfinity) {
-  const Stack s = run("ldc 1\nldc 2\nldinf");
+  const Stack s = run_t414("ldc 1\nldc 2\nldinf");
   EXPECT_EQ(s.a, 0x7F800000u);  // +Inf
   EXPECT_EQ(s.b, 2u);
   EXPECT_EQ(s.c, 1u);
@@ -138,19 +131,19 @@ TEST(IssT414Float, LoadInfinity) {
 
 TEST(IssT414Float, CflerrSetsErrorOnInfinityAndNaN) {
   for (Word w : {0x7F800000u, 0xFF800000u, 0x7FC00000u, 0x7F800001u, 0xFFFFFFFFu}) {
-    const Stack s = run("ldc " + hex(w) + "\ncflerr");
+    const Stack s = run_t414("ldc " + hex(w) + "\ncflerr");
     EXPECT_TRUE(s.error) << hex(w);
     EXPECT_EQ(s.a, w);  // the stack is unchanged
   }
   for (Word w : {0x3F800000u, 0x7F7FFFFFu, 0x00000001u, 0x80000000u, 0u}) {
-    EXPECT_FALSE(run("ldc " + hex(w) + "\ncflerr").error) << hex(w);
+    EXPECT_FALSE(run_t414("ldc " + hex(w) + "\ncflerr").error) << hex(w);
   }
 }
 
 // postnormsn with workspace word 0 = `temp`, C = places, B = fraction, A = guard.
 Stack post_normalise(std::int32_t temp, Word places, Word fraction, Word guard) {
-  return run("ldc " + std::to_string(temp) + "\nstl 0\nldc " + hex(places) + "\nldc " +
-             hex(fraction) + "\nldc " + hex(guard) + "\npostnormsn");
+  return run_t414("ldc " + std::to_string(temp) + "\nstl 0\nldc " + hex(places) + "\nldc " +
+                  hex(fraction) + "\nldc " + hex(guard) + "\npostnormsn");
 }
 
 TEST(IssT414Float, PostNormaliseNormalAndOverflow) {
@@ -194,8 +187,8 @@ TEST(IssT414Float, PostNormaliseDenormalises) {
 
 // roundsn with C = exponent, B = fraction (implied one at bit 31), A = guard.
 Stack round(Word exponent, Word fraction, Word guard) {
-  return run("ldc " + hex(exponent) + "\nldc " + hex(fraction) + "\nldc " + hex(guard) +
-             "\nroundsn");
+  return run_t414("ldc " + hex(exponent) + "\nldc " + hex(fraction) + "\nldc " + hex(guard) +
+                  "\nroundsn");
 }
 
 TEST(IssT414Float, RoundToNearestTiesToEven) {
@@ -243,7 +236,7 @@ Word t414_multiply(Word x, Word y) {
                               "norm\npostnormsn\nroundsn\n"
                               "ldc " +
                               hex((x ^ y) & 0x80000000u) + "\nor\nstl 5\nldl 5";
-  return run(program).a;
+  return run_t414(program).a;
 }
 
 Word host_multiply(Word x, Word y) {

@@ -8,6 +8,7 @@
 
 #include "network/topology_file.hpp"
 #include "test_util.hpp"
+#include "tests/test_files.hpp"
 #include "tools/scene.hpp"
 
 namespace {
@@ -31,10 +32,7 @@ void expect_clean(const std::string& path, bool may_succeed) {
   }
 }
 
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test_files::read_file;
 
 TEST(NetworkGarbage, RandomBytes) {
   std::mt19937 rng(800);
@@ -58,7 +56,7 @@ TEST(NetworkGarbage, RandomPrintableText) {
 
 TEST(NetworkGarbage, EveryTruncationOfValidFiles) {
   for (const char* name : {"tree-3.toml", "mesh-3x3.toml"}) {
-    const std::string text = read(nettest::source_dir() + "/configs/topologies/" + name);
+    const std::string text = read_file(nettest::source_dir() + "/configs/topologies/" + name);
     ASSERT_FALSE(text.empty());
     for (std::size_t n = 0; n <= text.size(); n += 3)
       expect_clean(write_file("cut.toml", text.substr(0, n)), true);

@@ -36,18 +36,19 @@ std::string chain_map(
          last_wire;                                                // 15
 }
 
-network::Topology read(const std::string& text, std::optional<ProcessorType> each = std::nullopt) {
+network::Topology read_map(const std::string& text,
+                           std::optional<ProcessorType> each = std::nullopt) {
   return parse_icollect_map(text, "net.map", each);
 }
 
 ::testing::AssertionResult bad(const std::string& text, int line, int column,
                                std::initializer_list<std::string> parts,
                                std::optional<ProcessorType> each = std::nullopt) {
-  return nettest::fails_at([&] { read(text, each); }, "net.map", line, column, parts);
+  return nettest::fails_at([&] { read_map(text, each); }, "net.map", line, column, parts);
 }
 
 TEST(IcollectMap, ReadsTheProcessorsAndTheWiresOfAChain) {
-  const network::Topology t = read(chain_map());
+  const network::Topology t = read_map(chain_map());
   ASSERT_EQ(t.processors.size(), 3u);
   for (int i = 0; i < 3; ++i) {
     EXPECT_EQ(t.processors[i].name, "P" + std::to_string(i));
@@ -65,7 +66,7 @@ TEST(IcollectMap, ReadsTheProcessorsAndTheWiresOfAChain) {
 }
 
 TEST(IcollectMap, AGivenProcessorTypeIsEveryProcessorOfItsFamily) {
-  const network::Topology t = read(chain_map(), ProcessorType::T805_25);
+  const network::Topology t = read_map(chain_map(), ProcessorType::T805_25);
   for (const network::ProcessorSpec& p : t.processors)
     EXPECT_EQ(p.config.type, ProcessorType::T805_25) << p.name;
 }
@@ -75,7 +76,7 @@ TEST(IcollectMap, AT414MapIsT414s) {
   EXPECT_TRUE(bad(text, 6, 40, {"T414", "T800-20", "without a floating-point unit"},
                   ProcessorType::T800_20));
   for (std::size_t at; (at = text.find("T800")) != std::string::npos;) text.replace(at, 4, "T414");
-  EXPECT_EQ(read(text).processors[1].config.type, ProcessorType::T414_20);
+  EXPECT_EQ(read_map(text).processors[1].config.type, ProcessorType::T414_20);
 }
 
 TEST(IcollectMap, AFamilyNotModelledIsAnError) {

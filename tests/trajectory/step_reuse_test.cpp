@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include "tests/test_files.hpp"
 #include "tests/test_paths.hpp"
 
 namespace {
@@ -30,12 +31,7 @@ struct Outcome {
   std::string trace;  // the CSV trace, when asked for
 };
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_files::read_file;
 
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;
@@ -45,7 +41,7 @@ std::vector<std::string> split(const std::string& line) {
 }
 
 // `t800sim run configs/scenes/trajectory.toml --json` with the overrides, reuse on or off.
-Outcome run(const std::vector<std::string>& overrides, bool reuse, bool trace = false) {
+Outcome run_steps(const std::vector<std::string>& overrides, bool reuse, bool trace = false) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   std::string name = info->name();
   std::replace(name.begin(), name.end(), '/', '-');  // parameterised tests: Case/Param
@@ -65,12 +61,12 @@ Outcome run(const std::vector<std::string>& overrides, bool reuse, bool trace = 
   EXPECT_EQ(pclose(pipe), 0) << command << "\n" << out;
   Outcome r;
   r.report = nlohmann::json::parse(out);
-  std::stringstream csv(read(base + ".csv"));
+  std::stringstream csv(read_file(base + ".csv"));
   std::string line;
   std::getline(csv, line);
   r.header = split(line);
   while (std::getline(csv, line)) r.rows.push_back(split(line));
-  if (trace) r.trace = read(base + "-trace.csv");
+  if (trace) r.trace = read_file(base + "-trace.csv");
   return r;
 }
 
@@ -149,7 +145,7 @@ class StepReuse : public ::testing::TestWithParam<Case> {};
 TEST_P(StepReuse, GivesWhatSimulatingEveryStepGives) {
   const auto overrides =
       with({"fidelity.compute=block", "workload.steps=30"}, GetParam().overrides);
-  const Outcome on = run(overrides, true), off = run(overrides, false);
+  const Outcome on = run_steps(overrides, true), off = run_steps(overrides, false);
   expect_same(on, off);
   EXPECT_TRUE(reuse_of(on)["enabled"].get<bool>());
   EXPECT_GT(reuse_of(on)["reused_steps"].get<int>(), 20) << reuse_of(on).dump();
@@ -180,7 +176,7 @@ TEST(StepReuse, ANewPivotPatternIsSimulated) {
       "1.2865180969238281, 1.0319352149963379, -0.3430715799331665]",
       "workload.qd=[-0.009274238720536232, -0.05708220973610878, -14.996444702148438, "
       "0.20436160266399384, 0.42257809638977051, -0.11439169943332672]"};
-  const Outcome on = run(overrides, true), off = run(overrides, false);
+  const Outcome on = run_steps(overrides, true), off = run_steps(overrides, false);
   expect_same(on, off);
   EXPECT_GE(reuse_of(on)["signatures_recorded"].get<int>(), 2) << reuse_of(on).dump();
   EXPECT_GT(reuse_of(on)["reused_steps"].get<int>(), 0);
@@ -197,7 +193,7 @@ TEST(StepReuse, ANewPivotPatternIsSimulated) {
 // and every simulated step says why.
 TEST(StepReuse, AutoComputeFidelityStillEqualsSimulatingEveryStep) {
   const std::vector<std::string> overrides = {"workload.steps=20"};
-  const Outcome on = run(overrides, true), off = run(overrides, false);
+  const Outcome on = run_steps(overrides, true), off = run_steps(overrides, false);
   expect_same(on, off);
   int explained = 0;
   for (const auto& row : reuse_of(on)["simulated_because"]) explained += row["steps"].get<int>();
@@ -209,7 +205,7 @@ TEST(StepReuse, AutoComputeFidelityStillEqualsSimulatingEveryStep) {
 TEST(StepReuse, TracesReplayTheRecordedIntervals) {
   const std::vector<std::string> overrides = {"fidelity.compute=block", "workload.steps=6",
                                               "workload.integrator=semi-implicit-euler"};
-  const Outcome on = run(overrides, true, true), off = run(overrides, false, true);
+  const Outcome on = run_steps(overrides, true, true), off = run_steps(overrides, false, true);
   expect_same(on, off);
   EXPECT_GT(reuse_of(on)["reused_steps"].get<int>(), 0);
   std::stringstream a(on.trace), b(off.trace);

@@ -9,17 +9,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "tests/test_files.hpp"
 #include "tests/test_paths.hpp"
 #include "tools/table_files.hpp"
 
 namespace {
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_files::read_file;
 
 workloads::RunReport report_with(const std::vector<std::vector<double>>& rows) {
   workloads::RunReport report;
@@ -33,7 +29,7 @@ TEST(TableFiles, NumbersReadBackExactly) {
   workloads::Params params;
   params.set("output_csv", path);
   tools::write_tables(report_with(rows), params);
-  std::istringstream csv(read(path));
+  std::istringstream csv(read_file(path));
   std::string line;
   std::getline(csv, line);
   EXPECT_EQ(line, "t,x");
