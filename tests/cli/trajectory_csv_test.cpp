@@ -18,14 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string fresh_dir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir =
-      fs::path(test_paths::binary_dir()) / "test-output" / info->test_suite_name() / info->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
+using cli_test::fresh_dir;
 
 json report_of(const cli_test::Output& o) {
   const auto brace = o.out.find('{');
