@@ -15,6 +15,9 @@ Core::Core(const CoreConfig& config)
       decoded_(memory_),
       stepper_(*config.processor->timing,
                config.processor->external_access_cycles + config.wait_states, false),
+      blocks_(decoded_, memory_, *config.processor,
+              config.processor->external_access_cycles + config.wait_states),
+      blocks_on_(config.blocks),
       timeslice_cycles_(
           std::int64_t(timing::kTimesliceUs * 1000.0 / config.processor->cycle_ns + 0.5)),
       interrupt_latency_(timing::kInterruptLatencyTypical) {
@@ -57,7 +60,7 @@ StopReason Core::run(std::int64_t until, std::int64_t max_instructions) {
       }
       if (cycle() >= until) return StopReason::running;
       if (instructions_ >= last) return StopReason::limit;
-      step(decoded_.at(r_.iptr));
+      if (!run_block(std::min(until, next_timer_), last)) step(decoded_.at(r_.iptr));
     } catch (const MemoryFault& fault) {
       memory_fault(fault, r_.iptr);
     }

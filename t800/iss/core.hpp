@@ -16,6 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "t800/iss/blocks.hpp"
 #include "t800/iss/decoder.hpp"
 #include "t800/iss/fpu.hpp"
 #include "t800/iss/machine_words.hpp"
@@ -78,6 +79,9 @@ struct CoreConfig {
   std::int64_t installed_bytes = 1 << 20;  // from MostNeg, on-chip RAM included
   AddressPolicy policy = AddressPolicy::wrap;
   int wait_states = 0;  // added to each external access
+  // Straight-line code is timed once for each way it runs and replayed (blocks.hpp): the same
+  // cycles as stepping every instruction, faster. False steps every instruction (tests compare).
+  bool blocks = true;
 };
 
 class Core {
@@ -125,12 +129,17 @@ class Core {
   // Every instruction from now on is tallied in `profile` (null: none; not owned).
   void set_profile(InstructionProfile* profile) { profile_ = profile; }
   std::int64_t instructions() const { return instructions_; }
+  const BlockCounts& block_counts() const { return blocks_.counts(); }
   Word mem_start() const { return kMostNeg + Word(processor_.reserved_bytes); }
   // The timer of `priority` at the current cycle.
   Word clock(int priority) const;
 
  private:
   void step(const Decoded& d);
+  // Runs the block at Iptr if there is one that ends before cycle `before` within the instruction
+  // budget (`last`); false if it did not (the caller steps the instruction).
+  bool run_block(std::int64_t before, std::int64_t last);
+  void time_block(const Block& b, int count, std::uint64_t variants);
   void execute(const Decoded& d, TimedStep& t);
   void operate(const Decoded& d, TimedStep& t);
   void fpu_operate(isa::Op op, TimedStep& t);
@@ -202,6 +211,8 @@ class Core {
   Memory memory_;
   DecodeCache decoded_;
   TimingStepper stepper_;
+  BlockCache blocks_;
+  bool blocks_on_;
   Registers r_;
   Fpu fpu_;
   LinkEngine* links_ = nullptr;

@@ -45,6 +45,8 @@ class DecodeCache {
   }
   void clear();
   std::int64_t misses() const { return misses_; }
+  // Changes whenever cached code may have been written (blocks.hpp keeps copies).
+  std::uint64_t generation() const { return generation_; }
 
  private:
   static constexpr std::uint32_t kSlots = 1u << 16, kMask = kSlots - 1;
@@ -59,6 +61,7 @@ class DecodeCache {
   Memory& memory_;
   std::vector<Slot> slots_;
   std::int64_t misses_ = 0;
+  std::uint64_t generation_ = 0;
 };
 
 }  // namespace t800::iss

@@ -43,7 +43,24 @@ struct StepTotals {
   std::int64_t memory_cycles = 0;  // cycles external data accesses added
   std::int64_t bytes = 0;          // code bytes executed
   std::int64_t instructions = 0;
+
+  StepTotals& operator+=(const StepTotals& more);
 };
+StepTotals operator-(StepTotals after, const StepTotals& before);
+
+// The stepper's state as the instructions after it see it, relative to the IU's cycle and to a code
+// word (the origin): two runs of the same instructions from equal contexts take the same cycles,
+// which lets the instruction-set simulator time a run of straight-line code once and replay it
+// (t800/iss/blocks.hpp). A time already past counts as now: nothing after starts before the IU.
+struct TimingContext {
+  static constexpr int kCodeWords = 4;  // code words buffered; more and there is no context
+  std::int32_t fpu = 0;                 // cycles after the IU's until the FPU is free
+  std::int32_t bus = 0;                 // ... until the external memory bus is
+  std::int32_t code_first = 0;          // the first buffered code word, from the origin
+  std::int32_t code_words = 0;
+  std::array<std::int32_t, kCodeWords> code_ready{};  // when each buffered word is in, as above
+};
+bool operator==(const TimingContext& a, const TimingContext& b);
 
 class TimingStepper {
  public:
@@ -60,6 +77,13 @@ class TimingStepper {
   void set_code_external(bool external) { fetch_.set_external(external); }
   // Neither unit starts anything before `cycle` (the processor waited, idle or descheduled).
   void wait_until(std::int64_t cycle);
+  // The state now, code words counted from `origin_word` (an address / 4); false if the prefetch
+  // buffer holds more than a context does or a time is too far ahead to say.
+  bool context(std::int64_t origin_word, TimingContext& out) const;
+  // Continues from `context` with the IU at cycle `iu`, as if the instructions that led there from
+  // another run's equal context had been stepped again: their totals are `added`.
+  void resume(const TimingContext& context, std::int64_t iu, std::int64_t origin_word,
+              const StepTotals& added);
 
   std::int64_t iu_free() const { return iu_; }
   std::int64_t fpu_free() const { return fpu_; }
@@ -94,6 +118,8 @@ class TimingStepper {
       if (external != external_) restart();
       external_ = external;
     }
+    bool save(std::int64_t origin_word, std::int64_t now, TimingContext& out) const;
+    void load(const TimingContext& context, std::int64_t origin_word, std::int64_t now);
 
    private:
     std::int64_t ready_external(std::int64_t begin, std::int64_t end, std::int64_t at);

@@ -73,8 +73,8 @@ struct TestMachine {
   explicit TestMachine(t800::ProcessorType type = t800::ProcessorType::T800_20,
                        std::int64_t installed = 1 << 20,
                        t800::iss::AddressPolicy policy = t800::iss::AddressPolicy::wrap,
-                       int wait_states = 0)
-      : core({&t800::processor_model(type), installed, policy, wait_states}) {
+                       int wait_states = 0, bool blocks = true)
+      : core({&t800::processor_model(type), installed, policy, wait_states, blocks}) {
     links.core = &core;
     core.set_link_engine(&links);
   }

@@ -1,0 +1,101 @@
+// Running a block (blocks.hpp): every instruction executed as step() executes it, the timing
+// replayed when the block ran this way before, stepped and remembered when not.
+#include <algorithm>
+
+#include "t800/iss/core.hpp"
+
+namespace t800::iss {
+
+bool Core::run_block(std::int64_t before, std::int64_t last) {
+  // A profile wants every instruction's own cycles.
+  if (!blocks_on_ || profile_) return false;
+  Block& b = blocks_.at(r_.iptr);
+  if (b.size == 0 || instructions_ + b.size > last) return false;
+  stepper_.set_code_external(b.code_external);
+  const std::int64_t entry = cycle();
+  TimingContext context;
+  if (!stepper_.context(b.origin_word(), context)) return false;
+  // Every instruction of the block must start before `before` (the cycle bound, the next timer),
+  // as step() would have been asked to stop there.
+  const std::int32_t code_wait =
+      *std::max_element(context.code_ready.begin(), context.code_ready.end());
+  if (entry + b.bound + context.fpu + context.bus + code_wait >= before) return false;
+
+  std::uint64_t variants = 0;
+  int done = 0;
+  TimedStep t;
+  stepping_ = true;
+  try {
+    while (done < b.size) {
+      const BlockInstruction& in = b.instructions[std::size_t(done)];
+      r_.iptr = b.start + in.offset + in.decoded.bytes;
+      t.param = 0;
+      t.data_external = t.real64 = false;
+      execute(in.decoded, t);
+      variants |= Block::variant(done, t.data_external, t.real64);
+      ++done;
+      // Stop where step() would see a difference: a halt, Error set under HaltOnError, code
+      // written (the rest is decoded afresh).
+      if (halt_ || (r_.error && r_.halt_on_error) || decoded_.generation() != b.generation)
+          [[unlikely]]
+        break;
+    }
+  } catch (const MemoryFault& fault) {
+    // As step(): the faulting instruction neither counts nor is timed.
+    stepping_ = moved_ = false;
+    const Word at = b.start + b.instructions[std::size_t(done)].offset;
+    instructions_ += done;
+    time_block(b, done, variants);
+    r_.iptr = at;
+    memory_fault(fault, at);
+    return true;
+  }
+  stepping_ = false;
+  instructions_ += done;
+  if (done == b.size && t.param != 0) variants |= Block::kLastParam;
+
+  const BlockTiming* known = done == b.size ? b.timing(context, variants) : nullptr;
+  if (known) {
+    stepper_.resume(known->exit, entry + known->cycles, b.origin_word(), known->added);
+    moved_ = false;
+    ++blocks_.counts().replayed;
+  } else {
+    ++blocks_.counts().timed;
+    const StepTotals totals = stepper_.totals();
+    time_block(b, done, variants);
+    if (moved_) {
+      moved_ = false;
+      stepper_.restart_fetch();
+    }
+    if (done == b.size) {
+      BlockTiming& remembered = b.new_timing();
+      remembered.variants = variants;
+      remembered.entry = context;
+      remembered.cycles = cycle() - entry;
+      remembered.added = stepper_.totals() - totals;
+      remembered.valid = stepper_.context(b.origin_word(), remembered.exit);
+    }
+  }
+  if (r_.error && r_.halt_on_error && !halt_) [[unlikely]]
+    halt("HaltOnError: Error set by " + error_by_,
+         b.start + b.instructions[std::size_t(done - 1)].offset);
+  return true;
+}
+
+// Steps the timing rule through the block's first `count` instructions, as step() does one.
+void Core::time_block(const Block& b, int count, std::uint64_t variants) {
+  for (int i = 0; i < count; ++i) {
+    const BlockInstruction& in = b.instructions[std::size_t(i)];
+    TimedStep t;
+    t.op = in.decoded.op;
+    t.prefix_cycles = in.decoded.prefix_cycles;
+    t.bytes = in.decoded.bytes;
+    t.address = b.start + in.offset;
+    t.data_external = (variants >> (2 * i)) & 1;
+    t.real64 = (variants >> (2 * i + 1)) & 1;
+    if (i == b.size - 1 && (variants & Block::kLastParam)) t.param = 1;
+    stepper_.step(t);
+  }
+}
+
+}  // namespace t800::iss

@@ -1,0 +1,101 @@
+// Straight-line code, decoded once and timed once for each way it runs. A block is the run of
+// instructions from an address up to the first that may leave it or whose time depends on its
+// operands (a jump, a process switch, a link or timer instruction, a shift); a call, a return or a
+// conditional jump may end it. The core still executes every instruction of a block (their effects
+// are the program's); what it saves is the timing. The timing rule is deterministic: the same
+// instructions, started from equal timing contexts (timing_stepper.hpp) with their data in the same
+// places and their operands of the same precision, take the same cycles. So a block remembers the
+// outcome of the last few ways it ran and replays one when it recurs, cycle for cycle what stepping
+// every instruction gives (tests/iss/block_engine_test.cpp holds the two together).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "t800/iss/decoder.hpp"
+#include "t800/processors/processor_model.hpp"
+#include "t800/processors/timing_stepper.hpp"
+
+namespace t800::iss {
+
+struct BlockInstruction {
+  Decoded decoded;
+  std::uint16_t offset = 0;  // of its first byte, from the block's start
+};
+
+// One way a block ran, timed: the context it began in, its instructions' variants (see Block), the
+// IU's cycles from its start to its end, the context it left and the totals it added.
+struct BlockTiming {
+  bool valid = false;
+  std::uint64_t variants = 0;
+  TimingContext entry, exit;
+  std::int64_t cycles = 0;
+  StepTotals added;
+};
+
+struct Block {
+  static constexpr int kMaxInstructions = 24;
+  static constexpr int kTimings = 4;
+  // Variants: instruction i's data in external memory is bit 2i, REAL64 operands bit 2i + 1; the
+  // last instruction's timing parameter set (cj taken) is this bit.
+  static constexpr std::uint64_t kLastParam = std::uint64_t(1) << 63;
+  static std::uint64_t variant(int index, bool data_external, bool real64) {
+    return std::uint64_t(int(data_external) | int(real64) << 1) << (2 * index);
+  }
+
+  Word start = 0;
+  std::uint64_t generation = 0;  // the decode cache's when the block was decoded
+  bool code_external = false;
+  int size = 0;  // 0: the code at `start` is not straight-line (the core steps it)
+  // The cycles from the block's start to its end are at most this plus the entry context's waits.
+  std::int64_t bound = 0;
+  std::array<BlockInstruction, kMaxInstructions> instructions;
+  std::array<BlockTiming, kTimings> timings;
+  int next_timing = 0;
+
+  std::int64_t origin_word() const { return std::int64_t(start) / 4; }
+  const BlockTiming* timing(const TimingContext& entry, std::uint64_t variants) const;
+  // The slot for a new way of running it (the oldest is forgotten).
+  BlockTiming& new_timing();
+};
+
+// How many blocks ran replayed and how many were timed instruction by instruction.
+struct BlockCounts {
+  std::int64_t decoded = 0;   // blocks decoded (again, after their code was written)
+  std::int64_t replayed = 0;  // runs whose timing was a remembered one
+  std::int64_t timed = 0;     // runs stepped through the timing rule (new ways, cut short)
+};
+
+class BlockCache {
+ public:
+  // `access_cycles`: one external memory access, wait states included.
+  BlockCache(DecodeCache& decoded, const Memory& memory, const ProcessorModel& processor,
+             int access_cycles);
+
+  // The block starting at `iptr`, decoded if it is not cached or its code was written since.
+  Block& at(Word iptr) {
+    std::unique_ptr<Block>& slot = slots_[iptr & kMask];
+    if (slot && slot->start == iptr && slot->generation == decoded_.generation()) return *slot;
+    return decode(slot, iptr);
+  }
+  BlockCounts& counts() { return counts_; }
+  const BlockCounts& counts() const { return counts_; }
+
+ private:
+  static constexpr std::uint32_t kSlots = 1u << 12, kMask = kSlots - 1;
+  Block& decode(std::unique_ptr<Block>& slot, Word iptr);
+  // Whether `op` may be a block's instruction (`last`: may end one).
+  bool replayable(isa::Op op, bool& last) const;
+  std::int64_t bound_of(const Decoded& d) const;
+
+  DecodeCache& decoded_;
+  const Memory& memory_;
+  const InstructionTimingTable& table_;
+  int access_cycles_;
+  std::vector<std::unique_ptr<Block>> slots_;
+  BlockCounts counts_;
+};
+
+}  // namespace t800::iss

@@ -1,0 +1,248 @@
+// The block engine (t800/iss/blocks.hpp) replays the timing of straight-line code: a program must
+// run the same, cycle for cycle and byte for byte, as when every instruction is stepped through the
+// timing rule. Each test runs one program on two processors, one with blocks and one without, and
+// compares everything the processor shows; the programs are made so that blocks recur in different
+// ways (data on chip and off, REAL32 and REAL64, code on chip and off) and are cut short (a timer
+// interrupt, a halt, a fault, code written ahead of itself).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/iss/iss_fixtures.hpp"
+
+namespace {
+
+using iss_test::TestMachine;
+using t800::iss::AddressPolicy;
+using t800::iss::StopReason;
+using t800::iss::Word;
+
+constexpr std::int64_t kInstalled = 1 << 20;
+
+struct Twins {
+  explicit Twins(AddressPolicy policy = AddressPolicy::wrap, int wait_states = 0)
+      : blocks(t800::ProcessorType::T800_20, kInstalled, policy, wait_states, true),
+        steps(t800::ProcessorType::T800_20, kInstalled, policy, wait_states, false) {}
+
+  void boot(const std::string& source) {
+    blocks.boot(source);
+    steps.boot(source);
+  }
+  // Runs both in slices of `slice` cycles (the way a network drives a core between its
+  // synchronisations) and checks that each slice ends at the same instruction and cycle.
+  StopReason run(std::int64_t slice) {
+    for (int n = 0; n < 1'000'000; ++n) {
+      const StopReason a = blocks.core.run(blocks.core.cycle() + slice, 10'000'000);
+      const StopReason b = steps.core.run(steps.core.cycle() + slice, 10'000'000);
+      EXPECT_EQ(a, b) << "slice " << n;
+      EXPECT_EQ(blocks.core.cycle(), steps.core.cycle()) << "slice " << n;
+      EXPECT_EQ(blocks.core.instructions(), steps.core.instructions()) << "slice " << n;
+      if (a != b || blocks.core.cycle() != steps.core.cycle()) return a;
+      if (a == StopReason::running) continue;
+      if (a == StopReason::halted || a == StopReason::limit) return a;
+      const bool delivered = blocks.links.deliver();
+      EXPECT_EQ(delivered, steps.links.deliver());
+      if (delivered) continue;
+      const auto due = blocks.core.next_timer_cycle();
+      EXPECT_EQ(due, steps.core.next_timer_cycle());
+      if (!due) return a;
+      blocks.core.advance_to(*due);
+      steps.core.advance_to(*due);
+    }
+    ADD_FAILURE() << "the program did not end";
+    return StopReason::running;
+  }
+
+  // Everything a run leaves that the two must agree on.
+  void expect_same() const {
+    const auto& x = blocks.core;
+    const auto& y = steps.core;
+    EXPECT_EQ(x.cycle(), y.cycle());
+    EXPECT_EQ(x.instructions(), y.instructions());
+    const t800::StepTotals& p = x.timing();
+    const t800::StepTotals& q = y.timing();
+    EXPECT_EQ(p.iu_busy, q.iu_busy);
+    EXPECT_EQ(p.fpu_busy, q.fpu_busy);
+    EXPECT_EQ(p.fpu_waits, q.fpu_waits);
+    EXPECT_EQ(p.fetch_waits, q.fetch_waits);
+    EXPECT_EQ(p.memory_cycles, q.memory_cycles);
+    EXPECT_EQ(p.bytes, q.bytes);
+    EXPECT_EQ(p.instructions, q.instructions);
+    EXPECT_EQ(x.registers().a, y.registers().a);
+    EXPECT_EQ(x.registers().b, y.registers().b);
+    EXPECT_EQ(x.registers().c, y.registers().c);
+    EXPECT_EQ(x.registers().iptr, y.registers().iptr);
+    EXPECT_EQ(x.registers().wptr, y.registers().wptr);
+    EXPECT_EQ(x.registers().error, y.registers().error);
+    EXPECT_EQ(x.halted(), y.halted());
+    if (x.halted() && y.halted()) {
+      EXPECT_EQ(x.halt_report()->reason, y.halt_report()->reason);
+      EXPECT_EQ(x.halt_report()->iptr, y.halt_report()->iptr);
+    }
+    Word differing = 0;
+    for (Word a = t800::iss::kMostNeg; a != t800::iss::kMostNeg + Word(kInstalled); a += 4)
+      if (x.memory().word(a) != y.memory().word(a)) ++differing;
+    EXPECT_EQ(differing, 0u) << "memory words that differ";
+    EXPECT_EQ(y.block_counts().replayed, 0);
+  }
+
+  TestMachine blocks, steps;
+};
+
+// A loop whose blocks recur with their data on chip (even counts) and off it (odd counts), their
+// FPU operands REAL32 and REAL64, while a high-priority process waits on the timer and interrupts
+// it; `padding` bytes in front put the code in external memory (the on-chip RAM is 4 KB).
+std::string mixed_loop(int padding, int iterations) {
+  return R"(
+        j start
+        .space )" +
+         std::to_string(padding) + R"(
+start:  ajw 64
+        ldc 0
+        sttimer
+        ldc child - next
+        ldpi
+next:   stl -21              -- the child's Iptr, below its workspace
+        ldlp -20             -- its Wdesc: priority 0, high
+        runp
+        ldc )" +
+         std::to_string(iterations) +
+         R"(
+        stl 1
+loop:   ldl 1
+        ldc 1
+        and
+        cj even
+        ldc #80020000        -- odd: data in external memory, REAL64
+        stl 3
+        ldc #80020000
+        fpldnldb
+        j body
+even:   ldc #80000F00        -- even: data on chip, REAL32
+        stl 3
+        ldc #80000F00
+        fpldnlsn
+body:   ldl 3
+        ldnl 0
+        adc 3
+        ldl 3
+        stnl 0
+        fpdup
+        fpadd
+        ldl 1
+        ldl 1
+        mul
+        ldl 3
+        stnl 1
+        ldl 1
+        ldc 1
+        and
+        cj single
+        ldl 3
+        fpstnldb
+        j counted
+single: ldl 3
+        fpstnlsn
+counted: ldl 1
+        adc -1
+        stl 1
+        ldl 1
+        cj done
+        j loop
+done:   ldl -19              -- what the child saw
+        stl 2
+        stopp
+child:  ldtimer
+        adc 40
+        tin
+        ldtimer
+        stl 1
+        stopp
+)";
+}
+
+TEST(BlockEngine, ALoopRunsAsSteppedWithItsCodeOnChip) {
+  Twins t;
+  t.boot(mixed_loop(16, 300));
+  EXPECT_EQ(t.run(1 << 30), StopReason::idle);
+  t.expect_same();
+  // The blocks were replayed, not only timed: the test would prove nothing otherwise.
+  EXPECT_GT(t.blocks.core.block_counts().replayed, 1000);
+}
+
+TEST(BlockEngine, ALoopRunsAsSteppedWithItsCodeInExternalMemory) {
+  Twins t;
+  t.boot(mixed_loop(5000, 300));
+  EXPECT_EQ(t.run(1 << 30), StopReason::idle);
+  t.expect_same();
+  EXPECT_GT(t.blocks.core.block_counts().replayed, 1000);
+}
+
+TEST(BlockEngine, WaitStatesAndShortSlicesStopWhereSteppingStops) {
+  // Slices of 37 cycles: a block that would end past the slice's end is stepped instead, so every
+  // slice ends at the instruction stepping ends it at.
+  Twins t(AddressPolicy::wrap, 2);
+  t.boot(mixed_loop(5000, 60));
+  EXPECT_EQ(t.run(37), StopReason::idle);
+  t.expect_same();
+  EXPECT_GT(t.blocks.core.block_counts().replayed, 0);
+}
+
+TEST(BlockEngine, CodeWrittenAheadInItsOwnBlockRunsAsWritten) {
+  // sb writes #42 (ldc 2) over the `ldc 1` after it, in the same straight-line run.
+  Twins t;
+  t.boot(R"(
+        ajw 16
+        ldc #42
+        ldc target - here
+        ldpi
+here:   sb
+target: ldc 1
+        stl 1
+        stopp
+)");
+  EXPECT_EQ(t.run(1 << 30), StopReason::idle);
+  t.expect_same();
+  EXPECT_EQ(t.blocks.core.memory().word(t.blocks.core.registers().wptr + 4), 2u);
+}
+
+TEST(BlockEngine, HaltOnErrorStopsAtTheInstructionThatSetError) {
+  Twins t;
+  const std::string source = R"(
+        ajw 16
+        sethalterr
+        ldc 1
+        ldc 2
+        ldc #7FFFFFFF
+overflow: adc 1
+        ldc 5
+        stl 1
+        stopp
+)";
+  const auto program = t.blocks.boot(source);
+  t.steps.boot(source);
+  EXPECT_EQ(t.run(1 << 30), StopReason::halted);
+  t.expect_same();
+  EXPECT_EQ(t.blocks.core.halt_report()->iptr, program.labels.at("overflow"));
+}
+
+TEST(BlockEngine, AFaultInsideABlockHaltsThereWithTheInstructionsBeforeItDone) {
+  Twins t(AddressPolicy::strict);
+  t.boot(R"(
+        ajw 16
+        ldc 7
+        stl 1
+        ldc #80100000
+        ldnl 0
+        ldc 5
+        stl 2
+        stopp
+)");
+  EXPECT_EQ(t.run(1 << 30), StopReason::halted);
+  t.expect_same();
+  const Word wptr = t.blocks.core.registers().wptr;
+  EXPECT_EQ(t.blocks.core.memory().word(wptr + 4), 7u);
+  EXPECT_EQ(t.blocks.core.memory().word(wptr + 8), 0u);
+}
+
+}  // namespace
