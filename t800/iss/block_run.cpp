@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "t800/iss/core.hpp"
+#include "t800/iss/execute.hpp"
 
 namespace t800::iss {
 

@@ -6,12 +6,6 @@ namespace t800::iss {
 
 using isa::Op;
 
-const BlockTiming* Block::timing(const TimingContext& entry, std::uint64_t variants) const {
-  for (const BlockTiming& t : timings)
-    if (t.valid && t.variants == variants && t.entry == entry) return &t;
-  return nullptr;
-}
-
 BlockTiming& Block::new_timing() {
   BlockTiming& t = timings[std::size_t(next_timing)];
   next_timing = (next_timing + 1) % kTimings;
@@ -114,9 +108,11 @@ std::int64_t BlockCache::bound_of(const Decoded& d) const {
   return d.prefix_cycles + slowest + fpu + accesses * access_cycles_;
 }
 
-Block& BlockCache::decode(std::unique_ptr<Block>& slot, Word iptr) {
-  if (!slot) slot = std::make_unique<Block>();
-  Block& b = *slot;
+Block& BlockCache::decode(Slot& slot, Word iptr) {
+  if (!slot.block) slot.block = std::make_unique<Block>();
+  slot.start = iptr;
+  slot.generation = decoded_.generation();
+  Block& b = *slot.block;
   ++counts_.decoded;
   b.start = iptr;
   b.generation = decoded_.generation();

@@ -56,7 +56,11 @@ struct Block {
   int next_timing = 0;
 
   std::int64_t origin_word() const { return std::int64_t(start) / 4; }
-  const BlockTiming* timing(const TimingContext& entry, std::uint64_t variants) const;
+  const BlockTiming* timing(const TimingContext& entry, std::uint64_t variants) const {
+    for (const BlockTiming& t : timings)
+      if (t.valid && t.variants == variants && t.entry == entry) return &t;
+    return nullptr;
+  }
   // The slot for a new way of running it (the oldest is forgotten).
   BlockTiming& new_timing();
 };
@@ -76,8 +80,8 @@ class BlockCache {
 
   // The block starting at `iptr`, decoded if it is not cached or its code was written since.
   Block& at(Word iptr) {
-    std::unique_ptr<Block>& slot = slots_[iptr & kMask];
-    if (slot && slot->start == iptr && slot->generation == decoded_.generation()) return *slot;
+    Slot& slot = slots_[iptr & kMask];
+    if (slot.start == iptr && slot.generation == decoded_.generation()) return *slot.block;
     return decode(slot, iptr);
   }
   BlockCounts& counts() { return counts_; }
@@ -85,7 +89,13 @@ class BlockCache {
 
  private:
   static constexpr std::uint32_t kSlots = 1u << 12, kMask = kSlots - 1;
-  Block& decode(std::unique_ptr<Block>& slot, Word iptr);
+  // The tag beside the pointer, so that a hit reads one cache line.
+  struct Slot {
+    Word start = 0;
+    std::uint64_t generation = ~std::uint64_t(0);  // none yet
+    std::unique_ptr<Block> block;
+  };
+  Block& decode(Slot& slot, Word iptr);
   // Whether `op` may be a block's instruction (`last`: may end one).
   bool replayable(isa::Op op, bool& last) const;
   std::int64_t bound_of(const Decoded& d) const;
@@ -94,7 +104,7 @@ class BlockCache {
   const Memory& memory_;
   const InstructionTimingTable& table_;
   int access_cycles_;
-  std::vector<std::unique_ptr<Block>> slots_;
+  std::vector<Slot> slots_;
   BlockCounts counts_;
 };
 

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "t800/iss/integer_arithmetic.hpp"
+#include "t800/iss/execute.hpp"
 #include "t800/timing_table.hpp"
 
 namespace t800::iss {
@@ -154,84 +154,6 @@ void Core::halt(const std::string& reason, Word iptr) {
 void Core::set_error(const char* by) {
   r_.error = true;
   error_by_ = by;
-}
-
-void Core::execute(const Decoded& d, TimedStep& t) {
-  const Word n = Word(d.operand);
-  switch (d.op) {
-    case Op::j:
-      r_.iptr += n;
-      control_moved();
-      if (n == 0 && j0_break_) {
-        halt("break: j 0 with the T805's j0 break enabled", r_.iptr);
-        return;
-      }
-      timeslice_point();
-      return;
-    case Op::ldlp:
-      push(r_.wptr + 4 * n);
-      return;
-    case Op::ldnl:
-      data_at(t, r_.a + 4 * n);
-      r_.a = memory_.word(r_.a + 4 * n);
-      return;
-    case Op::ldc:
-      push(n);
-      return;
-    case Op::ldnlp:
-      r_.a += 4 * n;
-      return;
-    case Op::ldl:
-      data_at(t, r_.wptr + 4 * n);
-      push(ws(d.operand));
-      return;
-    case Op::adc: {
-      const auto sum = checked_add(r_.a, n);
-      r_.a = sum.value;
-      if (sum.overflow) set_error("adc");
-      return;
-    }
-    case Op::call: {
-      const Word back = r_.iptr;
-      r_.wptr -= 16;
-      data_at(t, r_.wptr);
-      memory_.set_word(r_.wptr, back);
-      memory_.set_word(r_.wptr + 4, r_.a);
-      memory_.set_word(r_.wptr + 8, r_.b);
-      memory_.set_word(r_.wptr + 12, r_.c);
-      r_.a = back;
-      r_.iptr += n;
-      control_moved();
-      return;
-    }
-    case Op::cj:
-      if (r_.a == 0) {
-        r_.iptr += n;
-        t.param = 1;  // taken
-        control_moved();
-      } else {
-        pop();
-      }
-      return;
-    case Op::ajw:
-      r_.wptr += 4 * n;
-      return;
-    case Op::eqc:
-      r_.a = r_.a == n ? kTrue : kFalse;
-      return;
-    case Op::stl:
-      data_at(t, r_.wptr + 4 * n);
-      set_ws(d.operand, pop());
-      return;
-    case Op::stnl:
-      data_at(t, r_.a + 4 * n);
-      memory_.set_word(r_.a + 4 * n, r_.b);
-      r_.a = r_.c;
-      return;
-    default:
-      if (isa::info(d.op).encoding == isa::Encoding::direct) return;  // pfix/nfix never get here
-      operate(d, t);
-  }
 }
 
 }  // namespace t800::iss

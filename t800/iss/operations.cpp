@@ -1,7 +1,9 @@
 // The integer unit's operations (opr): arithmetic, logic, indexing, control, error handling,
 // processor initialisation, the T800's block moves, CRC and bit operations. Stack effects as the
 // CWG gives them; where it leaves a register undefined, the register keeps what a pop leaves.
-// Each sets the parameter its timing depends on (TimedStep::param, instruction_timing.hpp).
+// Each sets the parameter its timing depends on (TimedStep::param, instruction_timing.hpp). The
+// commonest (rev, lb, sb, bsub, wsub, diff, sum, gt, and, or, xor, not, mint, dup) are in
+// execute.hpp.
 #include <fmt/format.h>
 
 #include "t800/iss/core.hpp"
@@ -34,26 +36,6 @@ std::int64_t shift_param(Word places) {
 void Core::operate(const Decoded& d, TimedStep& t) {
   Registers& r = r_;
   switch (d.op) {
-    case Op::rev:
-      std::swap(r.a, r.b);
-      return;
-    case Op::lb:
-      data_at(t, r.a);
-      r.a = memory_.byte(r.a);
-      return;
-    case Op::sb:
-      data_at(t, r.a);
-      memory_.set_byte(r.a, std::uint8_t(r.b));
-      r.a = r.c;
-      return;
-    case Op::bsub:
-      r.a = r.a + r.b;
-      r.b = r.c;
-      return;
-    case Op::wsub:
-      r.a = r.a + 4 * r.b;
-      r.b = r.c;
-      return;
     case Op::wsubdb:
       r.a = r.a + 8 * r.b;
       r.b = r.c;
@@ -68,14 +50,6 @@ void Core::operate(const Decoded& d, TimedStep& t) {
       r.a = Word(std::int32_t(v) >> 2);
       return;
     }
-    case Op::diff:
-      r.a = r.b - r.a;
-      r.b = r.c;
-      return;
-    case Op::sum:
-      r.a = r.b + r.a;
-      r.b = r.c;
-      return;
     case Op::prod:
       t.param = highest_bit(r.a);
       r.a = r.b * r.a;
@@ -103,36 +77,11 @@ void Core::operate(const Decoded& d, TimedStep& t) {
       if (x.overflow) set_error("fmul");
       return;
     }
-    case Op::gt:
-      r.a = std::int32_t(r.b) > std::int32_t(r.a) ? kTrue : kFalse;
-      r.b = r.c;
-      return;
-    case Op::and_:
-      r.a &= r.b;
-      r.b = r.c;
-      return;
-    case Op::or_:
-      r.a |= r.b;
-      r.b = r.c;
-      return;
-    case Op::xor_:
-      r.a ^= r.b;
-      r.b = r.c;
-      return;
-    case Op::not_:
-      r.a = ~r.a;
-      return;
     case Op::shl:
     case Op::shr:
       t.param = shift_param(r.a);
       r.a = d.op == Op::shl ? shift_left(r.b, r.a) : shift_right(r.b, r.a);
       r.b = r.c;
-      return;
-    case Op::mint:
-      push(kMostNeg);
-      return;
-    case Op::dup:
-      push(r.a);
       return;
     case Op::pop:
       pop();

@@ -22,17 +22,6 @@ int prefix_cycles(isa::Op op, std::int64_t operand) {
   return 0;
 }
 
-StepTotals& StepTotals::operator+=(const StepTotals& more) {
-  iu_busy += more.iu_busy;
-  fpu_busy += more.fpu_busy;
-  fpu_waits += more.fpu_waits;
-  fetch_waits += more.fetch_waits;
-  memory_cycles += more.memory_cycles;
-  bytes += more.bytes;
-  instructions += more.instructions;
-  return *this;
-}
-
 StepTotals operator-(StepTotals after, const StepTotals& before) {
   after.iu_busy -= before.iu_busy;
   after.fpu_busy -= before.fpu_busy;
@@ -43,21 +32,6 @@ StepTotals operator-(StepTotals after, const StepTotals& before) {
   after.instructions -= before.instructions;
   return after;
 }
-
-bool operator==(const TimingContext& a, const TimingContext& b) {
-  return a.fpu == b.fpu && a.bus == b.bus && a.code_first == b.code_first &&
-         a.code_words == b.code_words && a.code_ready == b.code_ready;
-}
-
-namespace {
-// `at` as a context holds it: cycles after `now`, a time already past as now.
-bool relative(std::int64_t at, std::int64_t now, std::int32_t& out) {
-  const std::int64_t ahead = std::max<std::int64_t>(0, at - now);
-  if (ahead > std::numeric_limits<std::int32_t>::max()) return false;
-  out = std::int32_t(ahead);
-  return true;
-}
-}  // namespace
 
 std::int64_t TimingStepper::Bus::access(std::int64_t at, int words) {
   for (int k = 0; k < words; ++k) {
@@ -98,28 +72,6 @@ void TimingStepper::Fetcher::started_external(std::int64_t begin, std::int64_t a
   if (first_ + std::int64_t(words_.size()) == next) words_.push_back(bus_.access(at, 1));
 }
 
-bool TimingStepper::Fetcher::save(std::int64_t origin_word, std::int64_t now,
-                                  TimingContext& out) const {
-  if (words_.size() > std::size_t(TimingContext::kCodeWords)) return false;
-  out.code_words = std::int32_t(words_.size());
-  if (words_.empty()) return true;
-  const std::int64_t first = first_ - origin_word;
-  if (first < std::numeric_limits<std::int32_t>::min() ||
-      first > std::numeric_limits<std::int32_t>::max())
-    return false;
-  out.code_first = std::int32_t(first);
-  for (std::size_t k = 0; k < words_.size(); ++k)
-    if (!relative(words_[k], now, out.code_ready[k])) return false;
-  return true;
-}
-
-void TimingStepper::Fetcher::load(const TimingContext& context, std::int64_t origin_word,
-                                  std::int64_t now) {
-  words_.clear();
-  first_ = origin_word + context.code_first;
-  for (int k = 0; k < context.code_words; ++k) words_.push_back(now + context.code_ready[k]);
-}
-
 TimingStepper::TimingStepper(const InstructionTimingTable& table, int external_cycles,
                              bool code_external)
     : table_(table), bus_{0, external_cycles}, fetch_(code_external, bus_) {}
@@ -128,21 +80,6 @@ void TimingStepper::wait_until(std::int64_t cycle) {
   iu_ = std::max(iu_, cycle);
   fpu_ = std::max(fpu_, cycle);
   bus_.free_at = std::max(bus_.free_at, cycle);
-}
-
-bool TimingStepper::context(std::int64_t origin_word, TimingContext& out) const {
-  out = TimingContext{};
-  return relative(fpu_, iu_, out.fpu) && relative(bus_.free_at, iu_, out.bus) &&
-         fetch_.save(origin_word, iu_, out);
-}
-
-void TimingStepper::resume(const TimingContext& context, std::int64_t iu, std::int64_t origin_word,
-                           const StepTotals& added) {
-  iu_ = iu;
-  fpu_ = iu + context.fpu;
-  bus_.free_at = iu + context.bus;
-  fetch_.load(context, origin_word, iu);
-  totals_ += added;
 }
 
 namespace {

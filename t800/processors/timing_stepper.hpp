@@ -6,8 +6,10 @@
 // executes, so the two agree cycle for cycle on the same code.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 
 #include "t800/processors/instruction_timing.hpp"
 
@@ -44,7 +46,16 @@ struct StepTotals {
   std::int64_t bytes = 0;          // code bytes executed
   std::int64_t instructions = 0;
 
-  StepTotals& operator+=(const StepTotals& more);
+  StepTotals& operator+=(const StepTotals& more) {
+    iu_busy += more.iu_busy;
+    fpu_busy += more.fpu_busy;
+    fpu_waits += more.fpu_waits;
+    fetch_waits += more.fetch_waits;
+    memory_cycles += more.memory_cycles;
+    bytes += more.bytes;
+    instructions += more.instructions;
+    return *this;
+  }
 };
 StepTotals operator-(StepTotals after, const StepTotals& before);
 
@@ -60,7 +71,12 @@ struct TimingContext {
   std::int32_t code_words = 0;
   std::array<std::int32_t, kCodeWords> code_ready{};  // when each buffered word is in, as above
 };
-bool operator==(const TimingContext& a, const TimingContext& b);
+inline bool operator==(const TimingContext& a, const TimingContext& b) {
+  bool same = a.fpu == b.fpu && a.bus == b.bus && a.code_first == b.code_first &&
+              a.code_words == b.code_words;
+  for (int k = 0; k < TimingContext::kCodeWords; ++k) same &= a.code_ready[k] == b.code_ready[k];
+  return same;
+}
 
 class TimingStepper {
  public:
@@ -161,5 +177,53 @@ class TimingStepper {
 // through fpentry the `ldc code` with its prefixes and fpentry's own pfix): the tables quote the
 // basic operation only (docs/t800-timing.md, "Instructions").
 int prefix_cycles(isa::Op op, std::int64_t operand);
+
+// Inline: the instruction-set simulator takes and resumes a context for every block it runs.
+namespace timing_detail {
+// `at` as a context holds it: cycles after `now`, a time already past as now.
+inline bool relative(std::int64_t at, std::int64_t now, std::int32_t& out) {
+  const std::int64_t ahead = std::max<std::int64_t>(0, at - now);
+  if (ahead > std::numeric_limits<std::int32_t>::max()) return false;
+  out = std::int32_t(ahead);
+  return true;
+}
+}  // namespace timing_detail
+
+inline bool TimingStepper::Fetcher::save(std::int64_t origin_word, std::int64_t now,
+                                         TimingContext& out) const {
+  if (words_.size() > std::size_t(TimingContext::kCodeWords)) return false;
+  out.code_words = std::int32_t(words_.size());
+  if (words_.empty()) return true;
+  const std::int64_t first = first_ - origin_word;
+  if (first < std::numeric_limits<std::int32_t>::min() ||
+      first > std::numeric_limits<std::int32_t>::max())
+    return false;
+  out.code_first = std::int32_t(first);
+  for (std::size_t k = 0; k < words_.size(); ++k)
+    if (!timing_detail::relative(words_[k], now, out.code_ready[k])) return false;
+  return true;
+}
+
+inline void TimingStepper::Fetcher::load(const TimingContext& context, std::int64_t origin_word,
+                                         std::int64_t now) {
+  words_.clear();
+  first_ = origin_word + context.code_first;
+  for (int k = 0; k < context.code_words; ++k) words_.push_back(now + context.code_ready[k]);
+}
+
+inline bool TimingStepper::context(std::int64_t origin_word, TimingContext& out) const {
+  out = TimingContext{};
+  return timing_detail::relative(fpu_, iu_, out.fpu) &&
+         timing_detail::relative(bus_.free_at, iu_, out.bus) && fetch_.save(origin_word, iu_, out);
+}
+
+inline void TimingStepper::resume(const TimingContext& context, std::int64_t iu,
+                                  std::int64_t origin_word, const StepTotals& added) {
+  iu_ = iu;
+  fpu_ = iu + context.fpu;
+  bus_.free_at = iu + context.bus;
+  fetch_.load(context, origin_word, iu);
+  totals_ += added;
+}
 
 }  // namespace t800
