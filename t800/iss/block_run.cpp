@@ -11,17 +11,28 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
   // A profile wants every instruction's own cycles.
   if (!blocks_on_ || profile_) return false;
   Block& b = blocks_.at(r_.iptr);
-  if (b.size == 0 || instructions_ + b.size > last) return false;
-  stepper_.set_code_external(b.code_external);
+  if (b.size == 0) return false;
   const std::int64_t entry = cycle();
+  if (entry + b.bound >= before) {  // the check below, before taking a context for nothing
+    stepping_from_ = b.start;
+    stepping_to_ = b.start + b.span;
+    return false;
+  }
+  stepper_.set_code_external(b.code_external);
   TimingContext context;
-  if (!stepper_.context(b.origin_word(), context)) return false;
+  const bool captured = stepper_.context(b.origin_word(), context);
   // Every instruction of the block must start before `before` (the cycle bound, the next timer),
-  // as step() would have been asked to stop there.
+  // as step() would have been asked to stop there, and within the instruction budget.
   const std::int32_t code_wait =
       *std::max_element(context.code_ready.begin(), context.code_ready.end());
-  if (entry + b.bound + context.fpu + context.bus + code_wait >= before) return false;
+  if (!captured || instructions_ + b.size > last ||
+      entry + b.bound + context.fpu + context.bus + code_wait >= before) {
+    stepping_from_ = b.start;
+    stepping_to_ = b.start + b.span;
+    return false;
+  }
 
+  const std::uint64_t invalidations = blocks_.invalidations();
   std::uint64_t variants = 0;
   int done = 0;
   TimedStep t;
@@ -37,7 +48,7 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
       ++done;
       // Stop where step() would see a difference: a halt, Error set under HaltOnError, code
       // written (the rest is decoded afresh).
-      if (halt_ || (r_.error && r_.halt_on_error) || decoded_.generation() != b.generation)
+      if (halt_ || (r_.error && r_.halt_on_error) || blocks_.invalidations() != invalidations)
           [[unlikely]]
         break;
     }

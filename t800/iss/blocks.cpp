@@ -13,13 +13,37 @@ BlockTiming& Block::new_timing() {
   return t;
 }
 
-BlockCache::BlockCache(DecodeCache& decoded, const Memory& memory, const ProcessorModel& processor,
+BlockCache::BlockCache(DecodeCache& decoded, Memory& memory, const ProcessorModel& processor,
                        int access_cycles)
     : decoded_(decoded),
       memory_(memory),
       table_(*processor.timing),
       access_cycles_(access_cycles),
-      slots_(kSlots) {}
+      slots_(kSlots) {
+  memory.on_code_written([this](std::uint32_t line) {
+    decoded_.invalidate_line(line);
+    invalidate_line(line);
+  });
+}
+
+// Only the blocks with code in the line, not all: programs write data that shares a line with
+// code (a workspace just above it), and forgetting every block at each such write would decode
+// them all again and again. A block starts at most longest_span_ bytes before the line; the
+// slots are indexed by address, and their tags say whether the block there is one of them.
+void BlockCache::invalidate_line(std::uint32_t line_offset) {
+  constexpr std::uint32_t line_bytes = 1u << Memory::kLineShift;
+  const std::uint32_t look = std::min(longest_span_ + line_bytes, kSlots);
+  const Word first = kMostNeg + line_offset - Word(longest_span_);
+  for (std::uint32_t k = 0; k < look; ++k) {
+    Slot& s = slots_[(first + k) & kMask];
+    if (!s.live) continue;
+    const std::uint32_t start = memory_.offset(s.start);
+    if (start < line_offset + line_bytes && start + s.block->span > line_offset) {
+      s.live = false;
+      ++invalidations_;
+    }
+  }
+}
 
 // The instructions whose effects stay inside the processor's registers and memory: they neither
 // move control (but the last: call, cj, gcall, ret), nor switch processes, nor touch the links, the
@@ -97,27 +121,26 @@ bool BlockCache::replayable(Op op, bool& last) const {
   }
 }
 
-// The most cycles an instruction can add to a block, whatever waits before it: its prefixes and its
-// slowest figure, as much again for an FPU operation the next may wait for, and every bus access it
-// or its code may need.
+// The most cycles an instruction can add to a block, whatever waits before it, its code's fetch
+// aside: its prefixes and its slowest figure, as much again for an FPU operation the next may wait
+// for, and a bus access for each data word (in external memory or not).
 std::int64_t BlockCache::bound_of(const Decoded& d) const {
   const InstructionTiming& row = table_[d.op];
   const std::int64_t slowest = std::max({row.cycles, row.cycles_double, row.when_set});
   const std::int64_t fpu = row.unit == Unit::integer ? 0 : slowest;
-  const std::int64_t accesses = row.data_words + d.bytes / 4 + 2;
-  return d.prefix_cycles + slowest + fpu + accesses * access_cycles_;
+  return d.prefix_cycles + slowest + fpu + std::int64_t(row.data_words) * access_cycles_;
 }
 
 Block& BlockCache::decode(Slot& slot, Word iptr) {
   if (!slot.block) slot.block = std::make_unique<Block>();
   slot.start = iptr;
-  slot.generation = decoded_.generation();
+  slot.live = true;
   Block& b = *slot.block;
   ++counts_.decoded;
   b.start = iptr;
-  b.generation = decoded_.generation();
   b.size = 0;
-  b.bound = 2 * std::int64_t(access_cycles_);
+  b.span = 0;
+  b.bound = 0;
   b.timings = {};
   b.next_timing = 0;
   try {
@@ -126,17 +149,24 @@ Block& BlockCache::decode(Slot& slot, Word iptr) {
     while (b.size < Block::kMaxInstructions && memory_.external(at) == b.code_external) {
       const Decoded& d = decoded_.at(at);
       bool last = false;
-      if (!d.defined || !replayable(d.op, last)) break;
+      if (!d.defined || !replayable(d.op, last)) {
+        // Not straight-line code (yet): forgotten too if it is written.
+        if (b.size == 0) b.span = std::max<std::uint32_t>(1, d.bytes);
+        break;
+      }
       b.instructions[std::size_t(b.size++)] = {d, std::uint16_t(at - iptr)};
       b.bound += bound_of(d);
       at += d.bytes;
+      b.span = at - iptr;
       if (last) break;
     }
   } catch (const MemoryFault&) {
     // Past the installed memory (strict addressing): the block ends before it; stepping the
     // instruction there reports the fault.
   }
-  // Decoding may have written the decode cache's slots but never memory: the generation stands.
+  // Straight-line code fetches each of its words once (the first and last may be partial).
+  if (b.code_external) b.bound += (std::int64_t(b.span) / 4 + 2) * access_cycles_;
+  longest_span_ = std::max(longest_span_, b.span);
   return b;
 }
 

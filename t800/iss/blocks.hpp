@@ -46,10 +46,12 @@ struct Block {
   }
 
   Word start = 0;
-  std::uint64_t generation = 0;  // the decode cache's when the block was decoded
+  std::uint32_t span = 0;  // its code's bytes
   bool code_external = false;
   int size = 0;  // 0: the code at `start` is not straight-line (the core steps it)
-  // The cycles from the block's start to its end are at most this plus the entry context's waits.
+  // The cycles from the block's start to its end are at most this plus the entry context's waits
+  // (the FPU's, the bus's, the buffered code's): each cycle is the IU working, or waiting for the
+  // FPU (at most the FPU's work before it), or for the bus (at most every access it makes).
   std::int64_t bound = 0;
   std::array<BlockInstruction, kMaxInstructions> instructions;
   std::array<BlockTiming, kTimings> timings;
@@ -74,16 +76,21 @@ struct BlockCounts {
 
 class BlockCache {
  public:
-  // `access_cycles`: one external memory access, wait states included.
-  BlockCache(DecodeCache& decoded, const Memory& memory, const ProcessorModel& processor,
+  // `access_cycles`: one external memory access, wait states included. The cache takes over
+  // `memory`'s code-written hook and passes each line on to `decoded` too.
+  BlockCache(DecodeCache& decoded, Memory& memory, const ProcessorModel& processor,
              int access_cycles);
+  BlockCache(const BlockCache&) = delete;
+  BlockCache& operator=(const BlockCache&) = delete;
 
   // The block starting at `iptr`, decoded if it is not cached or its code was written since.
   Block& at(Word iptr) {
     Slot& slot = slots_[iptr & kMask];
-    if (slot.start == iptr && slot.generation == decoded_.generation()) return *slot.block;
+    if (slot.live && slot.start == iptr) return *slot.block;
     return decode(slot, iptr);
   }
+  // Counts the blocks forgotten because their code was written (a running block checks it).
+  std::uint64_t invalidations() const { return invalidations_; }
   BlockCounts& counts() { return counts_; }
   const BlockCounts& counts() const { return counts_; }
 
@@ -92,10 +99,12 @@ class BlockCache {
   // The tag beside the pointer, so that a hit reads one cache line.
   struct Slot {
     Word start = 0;
-    std::uint64_t generation = ~std::uint64_t(0);  // none yet
+    bool live = false;
     std::unique_ptr<Block> block;
   };
   Block& decode(Slot& slot, Word iptr);
+  // The line at `line_offset` was written: every block with code in it is forgotten.
+  void invalidate_line(std::uint32_t line_offset);
   // Whether `op` may be a block's instruction (`last`: may end one).
   bool replayable(isa::Op op, bool& last) const;
   std::int64_t bound_of(const Decoded& d) const;
@@ -105,6 +114,8 @@ class BlockCache {
   const InstructionTimingTable& table_;
   int access_cycles_;
   std::vector<Slot> slots_;
+  std::uint32_t longest_span_ = 0;  // of any block decoded: how far before a line to look
+  std::uint64_t invalidations_ = 0;
   BlockCounts counts_;
 };
 

@@ -60,7 +60,11 @@ StopReason Core::run(std::int64_t until, std::int64_t max_instructions) {
       }
       if (cycle() >= until) return StopReason::running;
       if (instructions_ >= last) return StopReason::limit;
-      if (!run_block(std::min(until, next_timer_), last)) step(decoded_.at(r_.iptr));
+      // Inside a block being stepped a block starting here would be decoded for nothing (and, in
+      // short slices, one at every instruction).
+      const bool inside_stepped = r_.iptr > stepping_from_ && r_.iptr < stepping_to_;
+      if (inside_stepped || !run_block(std::min(until, next_timer_), last))
+        step(decoded_.at(r_.iptr));
     } catch (const MemoryFault& fault) {
       memory_fault(fault, r_.iptr);
     }
@@ -103,6 +107,7 @@ void Core::step(const Decoded& d) {
   if (moved_) {
     moved_ = false;
     stepper_.restart_fetch();
+    stepping_to_ = 0;  // wherever control went, a block may start there
   }
   if (r_.error && r_.halt_on_error && !halt_) [[unlikely]]
     halt("HaltOnError: Error set by " + error_by_, at);

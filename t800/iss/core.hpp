@@ -213,6 +213,7 @@ class Core {
   TimingStepper stepper_;
   BlockCache blocks_;
   bool blocks_on_;
+  Word stepping_from_ = 0, stepping_to_ = 0;  // a block declined, stepped instead (run_block)
   Registers r_;
   Fpu fpu_;
   LinkEngine* links_ = nullptr;

@@ -111,7 +111,6 @@ DecodeCache::DecodeCache(Memory& memory) : memory_(memory), slots_(kSlots) {
 
 void DecodeCache::clear() {
   for (Slot& s : slots_) s.valid = false;
-  ++generation_;
 }
 
 const Decoded& DecodeCache::fill(Slot& s, Word iptr) {
@@ -129,7 +128,6 @@ void DecodeCache::invalidate_line(std::uint32_t line_offset) {
   // (a fused `ldc; fpentry` included). The slots are indexed by address, so the line's
   // instructions (and those that run into it) sit in consecutive slots; their tags say whether
   // they are the line's.
-  ++generation_;  // even if no slot holds the line's code now: a block may hold a copy
   const Word line = kMostNeg + line_offset;
   constexpr std::uint32_t line_bytes = 1u << Memory::kLineShift;
   for (Word a = line - Word(kMaxInstructionBytes); a != line + line_bytes; ++a) {

@@ -44,9 +44,10 @@ class DecodeCache {
     return fill(s, iptr);
   }
   void clear();
+  // The 16-byte line at `line_offset` (from MostNeg) was written: its instructions are decoded
+  // again when they next run. Memory calls it (the cache registers itself; blocks.hpp chains on).
+  void invalidate_line(std::uint32_t line_offset);
   std::int64_t misses() const { return misses_; }
-  // Changes whenever cached code may have been written (blocks.hpp keeps copies).
-  std::uint64_t generation() const { return generation_; }
 
  private:
   static constexpr std::uint32_t kSlots = 1u << 16, kMask = kSlots - 1;
@@ -56,12 +57,10 @@ class DecodeCache {
     Decoded decoded;
   };
   const Decoded& fill(Slot& s, Word iptr);
-  void invalidate_line(std::uint32_t line_offset);
 
   Memory& memory_;
   std::vector<Slot> slots_;
   std::int64_t misses_ = 0;
-  std::uint64_t generation_ = 0;
 };
 
 }  // namespace t800::iss

@@ -179,11 +179,11 @@ TEST(BlockEngine, ALoopRunsAsSteppedWithItsCodeInExternalMemory) {
 }
 
 TEST(BlockEngine, WaitStatesAndShortSlicesStopWhereSteppingStops) {
-  // Slices of 37 cycles: a block that would end past the slice's end is stepped instead, so every
+  // Slices of 97 cycles: a block that would end past the slice's end is stepped instead, so every
   // slice ends at the instruction stepping ends it at.
   Twins t(AddressPolicy::wrap, 2);
   t.boot(mixed_loop(5000, 60));
-  EXPECT_EQ(t.run(37), StopReason::idle);
+  EXPECT_EQ(t.run(97), StopReason::idle);
   t.expect_same();
   EXPECT_GT(t.blocks.core.block_counts().replayed, 0);
 }
