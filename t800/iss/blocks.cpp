@@ -36,7 +36,8 @@ void BlockCache::invalidate_line(std::uint32_t line_offset) {
   const Word first = kMostNeg + line_offset - Word(longest_span_);
   for (std::uint32_t k = 0; k < look; ++k) {
     Slot& s = slots_[(first + k) & kMask];
-    if (!s.live) continue;
+    // A block of no code (its start past the installed memory) has no line to be written.
+    if (!s.live || s.block->span == 0) continue;
     const std::uint32_t start = memory_.offset(s.start);
     if (start < line_offset + line_bytes && start + s.block->span > line_offset) {
       s.live = false;
