@@ -16,10 +16,11 @@ namespace boot_test {
 
 namespace fs = std::filesystem;
 
-// A scratch directory of its own for each test.
+// A scratch directory of its own for each test, emptied: build/test-output/boot/NAME, as the cli
+// tests' (cli_test::fresh_dir), so that a run leaves nothing in /tmp and a failed one's files stay
+// there to look at.
 inline fs::path scratch(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("t800sim-boot-" + name + "-" + std::to_string(::getpid()));
+  const fs::path dir = fs::path(test_paths::binary_dir()) / "test-output" / "boot" / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
