@@ -161,21 +161,22 @@ child:  ldtimer
 )";
 }
 
-TEST(BlockEngine, ALoopRunsAsSteppedWithItsCodeOnChip) {
+// `padding`: 16 bytes keep the code on chip, 5000 put it in external memory.
+void expect_loop_runs_as_stepped(int padding) {
   Twins t;
-  t.boot(mixed_loop(16, 300));
+  t.boot(mixed_loop(padding, 300));
   EXPECT_EQ(t.run(1 << 30), StopReason::idle);
   t.expect_same();
   // The blocks were replayed, not only timed: the test would prove nothing otherwise.
   EXPECT_GT(t.blocks.core.block_counts().replayed, 1000);
 }
 
+TEST(BlockEngine, ALoopRunsAsSteppedWithItsCodeOnChip) {
+  expect_loop_runs_as_stepped(16);
+}
+
 TEST(BlockEngine, ALoopRunsAsSteppedWithItsCodeInExternalMemory) {
-  Twins t;
-  t.boot(mixed_loop(5000, 300));
-  EXPECT_EQ(t.run(1 << 30), StopReason::idle);
-  t.expect_same();
-  EXPECT_GT(t.blocks.core.block_counts().replayed, 1000);
+  expect_loop_runs_as_stepped(5000);
 }
 
 TEST(BlockEngine, WaitStatesAndShortSlicesStopWhereSteppingStops) {
