@@ -1,7 +1,6 @@
 #include "t800/processors/timing_stepper.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
