@@ -1,11 +1,32 @@
 // Running a block (blocks.hpp): every instruction executed as step() executes it, the timing
 // replayed when the block ran this way before, stepped and remembered when not.
 #include <algorithm>
+#include <optional>
 
 #include "t800/iss/core.hpp"
 #include "t800/iss/execute.hpp"
 
 namespace t800::iss {
+
+[[gnu::always_inline]] inline bool Core::execute_block(const Block& b, int to,
+                                                       std::uint64_t invalidations, int& done,
+                                                       std::uint64_t& variants, TimedStep& t) {
+  while (done < to) {
+    const BlockInstruction& in = b.instructions[std::size_t(done)];
+    r_.iptr = b.start + in.offset + in.decoded.bytes;
+    t.param = 0;
+    t.data_external = t.real64 = false;
+    execute(in.decoded, t);
+    variants |= Block::variant(done, t.data_external, t.real64);
+    ++done;
+    // Stop where step() would see a difference: a halt, Error set under HaltOnError, code
+    // written (the rest is decoded afresh).
+    if (halt_ || (r_.error && r_.halt_on_error) || blocks_.invalidations() != invalidations)
+        [[unlikely]]
+      return false;
+  }
+  return true;
+}
 
 bool Core::run_block(std::int64_t before, std::int64_t last) {
   // A profile wants every instruction's own cycles.
@@ -35,46 +56,51 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
   const std::uint64_t invalidations = blocks_.invalidations();
   std::uint64_t variants = 0;
   int done = 0;
+  int timed = 0;                     // instructions already stepped through the timing rule
+  std::optional<StepTotals> totals;  // the stepper's, before it stepped them
   TimedStep t;
   stepping_ = true;
   try {
-    while (done < b.size) {
-      const BlockInstruction& in = b.instructions[std::size_t(done)];
-      r_.iptr = b.start + in.offset + in.decoded.bytes;
-      t.param = 0;
-      t.data_external = t.real64 = false;
-      execute(in.decoded, t);
-      variants |= Block::variant(done, t.data_external, t.real64);
-      ++done;
-      // Stop where step() would see a difference: a halt, Error set under HaltOnError, code
-      // written (the rest is decoded afresh).
-      if (halt_ || (r_.error && r_.halt_on_error) || blocks_.invalidations() != invalidations)
-          [[unlikely]]
-        break;
+    const int before_last = b.size - int(b.ends_at_timeslice_point);
+    if (execute_block(b, before_last, invalidations, done, variants, t) && done < b.size) {
+      // A timeslice point reads the clock: when it starts is remembered, or stepped to.
+      if (const BlockTiming* known = b.timing_before_last(context, variants)) {
+        slice_clock_ahead_ = known->last_start;
+      } else {
+        totals = stepper_.totals();
+        time_block(b, 0, before_last, variants);
+        timed = before_last;
+      }
+      execute_block(b, b.size, invalidations, done, variants, t);
+      slice_clock_ahead_ = 0;
     }
   } catch (const MemoryFault& fault) {
     // As step(): the faulting instruction neither counts nor is timed.
     stepping_ = moved_ = false;
+    slice_clock_ahead_ = 0;
     const Word at = b.start + b.instructions[std::size_t(done)].offset;
     instructions_ += done;
-    time_block(b, done, variants);
+    time_block(b, timed, done, variants);
     r_.iptr = at;
     memory_fault(fault, at);
     return true;
   }
   stepping_ = false;
   instructions_ += done;
+  blocks_.counts().instructions += done;
   if (done == b.size && t.param != 0) variants |= Block::kLastParam;
 
-  const BlockTiming* known = done == b.size ? b.timing(context, variants) : nullptr;
+  const BlockTiming* known = done == b.size && timed == 0 ? b.timing(context, variants) : nullptr;
   if (known) {
     stepper_.resume(known->exit, entry + known->cycles, b.origin_word(), known->added);
     moved_ = false;
     ++blocks_.counts().replayed;
   } else {
     ++blocks_.counts().timed;
-    const StepTotals totals = stepper_.totals();
-    time_block(b, done, variants);
+    if (!totals) totals = stepper_.totals();
+    time_block(b, timed, std::min(done, b.size - 1), variants);
+    const std::int64_t last_start = cycle() - entry;
+    time_block(b, std::max(timed, b.size - 1), done, variants);
     if (moved_) {
       moved_ = false;
       stepper_.restart_fetch();
@@ -84,7 +110,8 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
       remembered.variants = variants;
       remembered.entry = context;
       remembered.cycles = cycle() - entry;
-      remembered.added = stepper_.totals() - totals;
+      remembered.last_start = last_start;
+      remembered.added = stepper_.totals() - *totals;
       remembered.valid = stepper_.context(b.origin_word(), remembered.exit);
     }
   }
@@ -94,9 +121,8 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
   return true;
 }
 
-// Steps the timing rule through the block's first `count` instructions, as step() does one.
-void Core::time_block(const Block& b, int count, std::uint64_t variants) {
-  for (int i = 0; i < count; ++i) {
+void Core::time_block(const Block& b, int from, int to, std::uint64_t variants) {
+  for (int i = from; i < to; ++i) {
     const BlockInstruction& in = b.instructions[std::size_t(i)];
     TimedStep t;
     t.op = in.decoded.op;

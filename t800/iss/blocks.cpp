@@ -47,19 +47,23 @@ void BlockCache::invalidate_line(std::uint32_t line_offset) {
 }
 
 // The instructions whose effects stay inside the processor's registers and memory: they neither
-// move control (but the last: call, cj, gcall, ret), nor switch processes, nor touch the links, the
-// timers or the clock. Whether their time depends on their operands is the table's to say.
+// move control nor switch processes (but the last: call, cj, gcall, ret, and j and lend, where a
+// timeslice may be taken), nor touch the links, the timers or the clock. Whether their time depends
+// on their operands is the table's to say.
 bool BlockCache::replayable(Op op, bool& last) const {
   last = false;
   const InstructionTiming& row = table_[op];
   if (!row.defined || row.per_param != 0 || row.data_words_per_param != 0) return false;
   switch (op) {
+    case Op::j:
+    case Op::lend:
     case Op::cj:
     case Op::call:
     case Op::gcall:
     case Op::ret:
       last = true;
-      return op == Op::cj || row.when_set == 0;  // cj's taken figure is a variant
+      // cj's taken figure and lend's looping one are a variant.
+      return op == Op::cj || op == Op::lend || row.when_set == 0;
     case Op::ldlp:
     case Op::ldnl:
     case Op::ldc:
@@ -142,6 +146,7 @@ Block& BlockCache::decode(Slot& slot, Word iptr) {
   b.size = 0;
   b.span = 0;
   b.bound = 0;
+  b.ends_at_timeslice_point = false;
   b.timings = {};
   b.next_timing = 0;
   try {
@@ -159,7 +164,10 @@ Block& BlockCache::decode(Slot& slot, Word iptr) {
       b.bound += bound_of(d);
       at += d.bytes;
       b.span = at - iptr;
-      if (last) break;
+      if (last) {
+        b.ends_at_timeslice_point = d.op == Op::j || d.op == Op::lend;
+        break;
+      }
     }
   } catch (const MemoryFault&) {
     // Past the installed memory (strict addressing): the block ends before it; stepping the

@@ -1,12 +1,12 @@
 // Straight-line code, decoded once and timed once for each way it runs. A block is the run of
 // instructions from an address up to the first that may leave it or whose time depends on its
-// operands (a jump, a process switch, a link or timer instruction, a shift); a call, a return or a
-// conditional jump may end it. The core still executes every instruction of a block (their effects
-// are the program's); what it saves is the timing. The timing rule is deterministic: the same
-// instructions, started from equal timing contexts (timing_stepper.hpp) with their data in the same
-// places and their operands of the same precision, take the same cycles. So a block remembers the
-// outcome of the last few ways it ran and replays one when it recurs, cycle for cycle what stepping
-// every instruction gives (tests/iss/block_engine_test.cpp holds the two together).
+// operands (a process switch, a link or timer instruction, a shift); a jump, a loop end, a call, a
+// return or a conditional jump may end it. The core still executes every instruction of a block
+// (their effects are the program's); what it saves is the timing. The timing rule is deterministic:
+// the same instructions, started from equal timing contexts (timing_stepper.hpp) with their data in
+// the same places and their operands of the same precision, take the same cycles. So a block
+// remembers the outcome of the last few ways it ran and replays one when it recurs, cycle for cycle
+// what stepping every instruction gives (tests/iss/block_engine_test.cpp holds the two together).
 #pragma once
 
 #include <array>
@@ -32,6 +32,7 @@ struct BlockTiming {
   std::uint64_t variants = 0;
   TimingContext entry, exit;
   std::int64_t cycles = 0;
+  std::int64_t last_start = 0;  // from the block's start to its last instruction's
   StepTotals added;
 };
 
@@ -49,6 +50,9 @@ struct Block {
   std::uint32_t span = 0;  // its code's bytes
   bool code_external = false;
   int size = 0;  // 0: the code at `start` is not straight-line (the core steps it)
+  // Its last instruction is a timeslice point (j, lend): it reads the clock when it starts, so it
+  // executes once the cycle it starts at is known.
+  bool ends_at_timeslice_point = false;
   // The cycles from the block's start to its end are at most this plus the entry context's waits
   // (the FPU's, the bus's, the buffered code's): each cycle is the IU working, or waiting for the
   // FPU (at most the FPU's work before it), or for the bus (at most every access it makes).
@@ -63,15 +67,24 @@ struct Block {
       if (t.valid && t.variants == variants && t.entry == entry) return &t;
     return nullptr;
   }
+  // A remembered timing from `entry` whose instructions before the last ran as `variants` says:
+  // the last starts as it did then (an instruction's timing depends only on those before it).
+  const BlockTiming* timing_before_last(const TimingContext& entry, std::uint64_t variants) const {
+    const std::uint64_t before_last = (std::uint64_t(1) << (2 * (size - 1))) - 1;
+    for (const BlockTiming& t : timings)
+      if (t.valid && (t.variants & before_last) == variants && t.entry == entry) return &t;
+    return nullptr;
+  }
   // The slot for a new way of running it (the oldest is forgotten).
   BlockTiming& new_timing();
 };
 
 // How many blocks ran replayed and how many were timed instruction by instruction.
 struct BlockCounts {
-  std::int64_t decoded = 0;   // blocks decoded (again, after their code was written)
-  std::int64_t replayed = 0;  // runs whose timing was a remembered one
-  std::int64_t timed = 0;     // runs stepped through the timing rule (new ways, cut short)
+  std::int64_t decoded = 0;       // blocks decoded (again, after their code was written)
+  std::int64_t replayed = 0;      // runs whose timing was a remembered one
+  std::int64_t timed = 0;         // runs stepped through the timing rule (new ways, cut short)
+  std::int64_t instructions = 0;  // executed in blocks (the rest were stepped one by one)
 };
 
 class BlockCache {

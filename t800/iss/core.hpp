@@ -139,7 +139,11 @@ class Core {
   // Runs the block at Iptr if there is one that ends before cycle `before` within the instruction
   // budget (`last`); false if it did not (the caller steps the instruction).
   bool run_block(std::int64_t before, std::int64_t last);
-  void time_block(const Block& b, int count, std::uint64_t variants);
+  // Executes the block's instructions from `done` up to `to`; false if one stopped it first.
+  bool execute_block(const Block& b, int to, std::uint64_t invalidations, int& done,
+                     std::uint64_t& variants, TimedStep& t);
+  // Steps the timing rule through the block's instructions [from, to), as step() does one.
+  void time_block(const Block& b, int from, int to, std::uint64_t variants);
   void execute(const Decoded& d, TimedStep& t);
   void operate(const Decoded& d, TimedStep& t);
   void fpu_operate(isa::Op op, TimedStep& t);
@@ -230,6 +234,9 @@ class Core {
   double clock_base_ns_ = 0;
   std::int64_t next_timer_ = std::numeric_limits<std::int64_t>::max();
   std::int64_t slice_start_ = 0;  // the running low-priority process's dispatch cycle
+  // A block's instructions execute before its timing is taken (block_run.cpp): a timeslice point
+  // ending one is the clock's only reader, and starts this many cycles after cycle().
+  std::int64_t slice_clock_ahead_ = 0;
   std::int64_t timeslice_cycles_;
   int interrupt_latency_;
   bool j0_break_ = false;  // T805 setj0break

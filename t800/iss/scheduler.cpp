@@ -101,7 +101,8 @@ bool Core::idle() const {
 // it was dispatched, if another low-priority process is waiting (NB; docs/t800-timing.md 7).
 void Core::timeslice_point() {
   if (r_.priority != kLow || r_.fptr[kLow] == kNotProcess) return;
-  if (cycle() / timeslice_cycles_ - slice_start_ / timeslice_cycles_ < 2) return;
+  const std::int64_t now = cycle() + slice_clock_ahead_;
+  if (now / timeslice_cycles_ - slice_start_ / timeslice_cycles_ < 2) return;
   set_ws(kSlotIptr, r_.iptr);
   enqueue(r_.wdesc());
   running_ = false;

@@ -246,4 +246,141 @@ TEST(BlockEngine, AFaultInsideABlockHaltsThereWithTheInstructionsBeforeItDone) {
   EXPECT_EQ(t.blocks.core.memory().word(wptr + 8), 0u);
 }
 
+// Two low-priority processes, one looping with j and one with lend, each noting in shared words
+// who ran last, how often that changed and at which of their iterations: a timeslice is taken at a
+// j or lend that ends a block, as of the cycle that instruction starts (not the block's), so the
+// two must switch at the same instructions as when stepped. `padding` as in mixed_loop.
+std::string timesliced_loops(int padding, int iterations) {
+  const std::string n = std::to_string(iterations);
+  return R"(
+        j start
+        .space )" +
+         std::to_string(padding) + R"(
+start:  ajw 64
+        ldc 0
+        sttimer
+        ldc second - next
+        ldpi
+next:   stl -41              -- the second's Iptr, below its workspace
+        ldlp -40
+        adc 1                -- its Wdesc: priority 1, low
+        runp
+        ldc )" +
+         n + R"(
+        stl 1
+loop:   ldc #80000F00        -- who ran last: if not this one, a switch
+        ldnl 0
+        eqc 1
+        cj switched
+        j counted
+switched: ldc 1
+        ldc #80000F00
+        stnl 0
+        ldc #80000F00
+        ldnl 1
+        adc 1
+        dup
+        ldc #80000F00
+        stnl 1
+        ldl 1                -- the log: the switch's index, this one's count then
+        rev
+        ldc #80020000
+        wsub
+        stnl 0
+counted: ldl 1
+        adc -1
+        stl 1
+        ldl 1
+        cj done
+        ldl 1                -- a long block, so a tick is likely to pass between its start and j
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        stl 3
+        j loop
+done:   stopp
+second: ldc 0
+        stl 1
+        ldc )" +
+         n + R"(
+        stl 2
+again:  ldc #80000F00
+        ldnl 0
+        eqc 2
+        cj switch2
+        j other
+switch2: ldc 2
+        ldc #80000F00
+        stnl 0
+        ldc #80000F00
+        ldnl 1
+        adc 1
+        dup
+        ldc #80000F00
+        stnl 1
+        ldl 1                -- the log: the switch's index, this one's count then
+        rev
+        ldc #80020000
+        wsub
+        stnl 0
+other:  ldc 1000             -- and another before lend
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        ldc 7
+        div
+        stl 3
+        ldlp 1
+        ldc ended - again
+        lend
+ended:  stopp
+)";
+}
+
+void expect_timeslices_as_stepped(int padding) {
+  Twins t;
+  t.boot(timesliced_loops(padding, 5000));
+  EXPECT_EQ(t.run(1 << 30), StopReason::idle);
+  t.expect_same();
+  // Each ran several slices, and their j and lend ended replayed blocks.
+  EXPECT_GE(t.blocks.core.memory().word(0x80000F04), 4u);
+  EXPECT_GT(t.blocks.core.block_counts().replayed, 10000);
+}
+
+TEST(BlockEngine, ProcessesTimeslicedAtJAndLendSwitchAsStepped) {
+  expect_timeslices_as_stepped(16);
+}
+
+TEST(BlockEngine, ProcessesTimeslicedWithTheirCodeInExternalMemorySwitchAsStepped) {
+  expect_timeslices_as_stepped(5000);
+}
+
 }  // namespace

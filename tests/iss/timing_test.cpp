@@ -13,6 +13,15 @@ using t800::isa::Instruction;
 using t800::isa::Op;
 using t800::iss::StopReason;
 
+Instruction in(Op op, std::int64_t operand = 0, std::int64_t param = 0, bool real64 = false) {
+  Instruction i;
+  i.op = op;
+  i.operand = operand;
+  i.param = param;
+  i.real64 = real64;
+  return i;
+}
+
 TEST(IssTiming, HandCountFromTheTable) {
   // ldc 1 (1) + ldc 2 (1) + add (1) + stopp (11, prefixed: pfix 1; opr 5 = +1) and ajw 16
   // (pfix 1; ajw 0: 1 + 1) = 2 + 3 + 12 = 17 cycles.
@@ -54,13 +63,13 @@ TEST(IssTiming, StraightLineCodeTakesWhatTheStaticModelSays) {
         stopp
 )";
   const t800::isa::Sequence sequence = {
-      {Op::ajw, 16},  {Op::ldc, 3},  {Op::stl, 1},     {Op::ldl, 1},     {Op::ldl, 1},
-      {Op::mul},      {Op::stl, 2},  {Op::ldlp, 4},    {Op::fpldzerosn}, {Op::fpldzerosn},
-      {Op::fpadd},    {Op::ldc, 5},  {Op::ldc, 7},     {Op::add},        {Op::stl, 3},
-      {Op::fpstnlsn}, {Op::ldlp, 6}, {Op::fpldzerodb}, {Op::fpdup},      {Op::fpmul, 0, 0, true},
-      {Op::fpstnldb}, {Op::ldc, 1},  {Op::ldc, 9},     {Op::shl, 0, 9},  {Op::stl, 5},
-      {Op::stopp},
-  };
+      in(Op::ajw, 16),    in(Op::ldc, 3),     in(Op::stl, 1), in(Op::ldl, 1),
+      in(Op::ldl, 1),     in(Op::mul),        in(Op::stl, 2), in(Op::ldlp, 4),
+      in(Op::fpldzerosn), in(Op::fpldzerosn), in(Op::fpadd),  in(Op::ldc, 5),
+      in(Op::ldc, 7),     in(Op::add),        in(Op::stl, 3), in(Op::fpstnlsn),
+      in(Op::ldlp, 6),    in(Op::fpldzerodb), in(Op::fpdup),  in(Op::fpmul, 0, 0, true),
+      in(Op::fpstnldb),   in(Op::ldc, 1),     in(Op::ldc, 9), in(Op::shl, 0, 9),
+      in(Op::stl, 5),     in(Op::stopp)};
   TestMachine m;
   m.boot(source);
   EXPECT_EQ(m.run(), StopReason::idle);

@@ -26,6 +26,7 @@ struct ProcessorAccount {
   std::int64_t cycles = 0;
   std::int64_t synchronisations = 0;  // times the core stopped for SystemC
   std::int64_t dma_stall_cycles = 0;
+  t800::iss::BlockCounts blocks;  // how the ISS ran its code (t800/iss/blocks.hpp)
   std::optional<t800::iss::HaltReport> halt;
   std::vector<t800::iss::WaitingProcess> waiting;  // at the end
   bool instruction_limit = false;

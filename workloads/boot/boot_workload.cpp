@@ -90,6 +90,16 @@ ResultValue halt_value(const t800::iss::HaltReport& h) {
   return v;
 }
 
+// How the ISS ran the code: in blocks replayed or timed afresh, or one instruction at a time.
+ResultValue blocks_value(const t800::iss::BlockCounts& b) {
+  ResultValue v;
+  v.set("decoded", b.decoded);
+  v.set("replayed", b.replayed);
+  v.set("timed", b.timed);
+  v.set("instructions", b.instructions);
+  return v;
+}
+
 class BootWorkload : public Workload {
  public:
   explicit BootWorkload(const WorkloadContext& c)
@@ -179,6 +189,7 @@ class BootWorkload : public Workload {
       p.set("cycles", a.cycles);
       p.set("synchronisations", a.synchronisations);
       p.set("dma_stall_cycles", a.dma_stall_cycles);
+      p.set("blocks", blocks_value(a.blocks));
       p.set("state", nodes_[std::size_t(&a - s.accounts().data())]->state());
       if (a.halt) {
         p.set("halt", halt_value(*a.halt));

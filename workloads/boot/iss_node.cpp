@@ -385,6 +385,7 @@ void IssNode::account() {
   ProcessorAccount& a = session_.account(node_);
   a.instructions = core_.instructions();
   a.cycles = core_.cycle();
+  a.blocks = core_.block_counts();
 }
 
 void IssNode::wait_until_cycle(std::int64_t cycle) {
