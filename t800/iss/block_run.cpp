@@ -8,9 +8,9 @@
 
 namespace t800::iss {
 
-[[gnu::always_inline]] inline bool Core::execute_block(const Block& b, int to,
-                                                       std::uint64_t invalidations, int& done,
-                                                       std::uint64_t& variants, TimedStep& t) {
+[[gnu::always_inline]] inline bool Core::execute_block(const Block& b, int to, std::uint64_t stops,
+                                                       int& done, std::uint64_t& variants,
+                                                       TimedStep& t) {
   while (done < to) {
     const BlockInstruction& in = b.instructions[std::size_t(done)];
     r_.iptr = b.start + in.offset + in.decoded.bytes;
@@ -21,16 +21,13 @@ namespace t800::iss {
     ++done;
     // Stop where step() would see a difference: a halt, Error set under HaltOnError, code
     // written (the rest is decoded afresh).
-    if (halt_ || (r_.error && r_.halt_on_error) || blocks_.invalidations() != invalidations)
-        [[unlikely]]
+    if (blocks_.stops() != stops) [[unlikely]]
       return false;
   }
   return true;
 }
 
-bool Core::run_block(std::int64_t before, std::int64_t last) {
-  // A profile wants every instruction's own cycles.
-  if (!blocks_on_ || profile_) return false;
+[[gnu::always_inline]] inline bool Core::run_one_block(std::int64_t before, std::int64_t last) {
   Block& b = blocks_.at(r_.iptr);
   if (b.size == 0) return false;
   const std::int64_t entry = cycle();
@@ -53,7 +50,7 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
     return false;
   }
 
-  const std::uint64_t invalidations = blocks_.invalidations();
+  const std::uint64_t stops = blocks_.stops();
   std::uint64_t variants = 0;
   int done = 0;
   int timed = 0;                     // instructions already stepped through the timing rule
@@ -62,7 +59,7 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
   stepping_ = true;
   try {
     const int before_last = b.size - int(b.ends_at_timeslice_point);
-    if (execute_block(b, before_last, invalidations, done, variants, t) && done < b.size) {
+    if (execute_block(b, before_last, stops, done, variants, t) && done < b.size) {
       // A timeslice point reads the clock: when it starts is remembered, or stepped to.
       if (const BlockTiming* known = b.timing_before_last(context, variants)) {
         slice_clock_ahead_ = known->last_start;
@@ -71,7 +68,7 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
         time_block(b, 0, before_last, variants);
         timed = before_last;
       }
-      execute_block(b, b.size, invalidations, done, variants, t);
+      execute_block(b, b.size, stops, done, variants, t);
       slice_clock_ahead_ = 0;
     }
   } catch (const MemoryFault& fault) {
@@ -119,6 +116,19 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
     halt("HaltOnError: Error set by " + error_by_,
          b.start + b.instructions[std::size_t(done - 1)].offset);
   return true;
+}
+
+bool Core::run_block(std::int64_t before, std::int64_t last) {
+  // A profile wants every instruction's own cycles.
+  if (!blocks_on_ || profile_) return false;
+  // From one block straight to the next while nothing the run loop looks at between instructions
+  // has changed (a process switch, a halt, a synchronisation asked for).
+  bool ran = false;
+  while (run_one_block(before, last)) {
+    ran = true;
+    if (!running_ || halt_ || sync_requested_) break;
+  }
+  return ran;
 }
 
 void Core::time_block(const Block& b, int from, int to, std::uint64_t variants) {

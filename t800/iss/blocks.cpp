@@ -41,7 +41,7 @@ void BlockCache::invalidate_line(std::uint32_t line_offset) {
     const std::uint32_t start = memory_.offset(s.start);
     if (start < line_offset + line_bytes && start + s.block->span > line_offset) {
       s.live = false;
-      ++invalidations_;
+      ++stops_;
     }
   }
 }

@@ -102,8 +102,10 @@ class BlockCache {
     if (slot.live && slot.start == iptr) return *slot.block;
     return decode(slot, iptr);
   }
-  // Counts the blocks forgotten because their code was written (a running block checks it).
-  std::uint64_t invalidations() const { return invalidations_; }
+  // Counts what ends a running block after its current instruction (it checks the count after
+  // each): a block forgotten because its code was written, a halt, Error set under HaltOnError.
+  std::uint64_t stops() const { return stops_; }
+  void stop_running_block() { ++stops_; }
   BlockCounts& counts() { return counts_; }
   const BlockCounts& counts() const { return counts_; }
 
@@ -128,7 +130,7 @@ class BlockCache {
   int access_cycles_;
   std::vector<Slot> slots_;
   std::uint32_t longest_span_ = 0;  // of any block decoded: how far before a line to look
-  std::uint64_t invalidations_ = 0;
+  std::uint64_t stops_ = 0;
   BlockCounts counts_;
 };
 

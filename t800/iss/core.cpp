@@ -154,11 +154,13 @@ void Core::halt(const std::string& reason, Word iptr) {
   h.registers.iptr = iptr;
   halt_ = h;
   running_ = false;
+  blocks_.stop_running_block();
 }
 
 void Core::set_error(const char* by) {
   r_.error = true;
   error_by_ = by;
+  if (r_.halt_on_error) blocks_.stop_running_block();
 }
 
 }  // namespace t800::iss

@@ -137,10 +137,12 @@ class Core {
  private:
   void step(const Decoded& d);
   // Runs the block at Iptr if there is one that ends before cycle `before` within the instruction
-  // budget (`last`); false if it did not (the caller steps the instruction).
+  // budget (`last`), and the blocks after it while they do; false if none ran (the caller steps
+  // the instruction).
   bool run_block(std::int64_t before, std::int64_t last);
+  bool run_one_block(std::int64_t before, std::int64_t last);
   // Executes the block's instructions from `done` up to `to`; false if one stopped it first.
-  bool execute_block(const Block& b, int to, std::uint64_t invalidations, int& done,
+  bool execute_block(const Block& b, int to, std::uint64_t stops, int& done,
                      std::uint64_t& variants, TimedStep& t);
   // Steps the timing rule through the block's instructions [from, to), as step() does one.
   void time_block(const Block& b, int from, int to, std::uint64_t variants);

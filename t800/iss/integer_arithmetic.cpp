@@ -8,20 +8,7 @@ using U64 = std::uint64_t;
 S64 s(Word w) {
   return std::int32_t(w);
 }
-Checked of(S64 exact) {
-  return {Word(U64(exact)), exact < INT32_MIN || exact > INT32_MAX};
-}
 }  // namespace
-
-Checked checked_add(Word b, Word a) {
-  return of(s(b) + s(a));
-}
-Checked checked_sub(Word b, Word a) {
-  return of(s(b) - s(a));
-}
-Checked checked_mul(Word b, Word a) {
-  return of(s(b) * s(a));
-}
 
 Checked divide(Word b, Word a) {
   if (a == 0 || (b == kMostNeg && a == 0xFFFFFFFFu)) return {b, true};
@@ -35,7 +22,7 @@ Checked remainder(Word b, Word a) {
 }
 
 Checked long_add(Word b, Word a, Word carry) {
-  return of(s(b) + s(a) + S64(carry & 1));
+  return checked_exact(s(b) + s(a) + S64(carry & 1));
 }
 
 DoubleWord long_sum(Word b, Word a, Word carry) {
@@ -44,7 +31,7 @@ DoubleWord long_sum(Word b, Word a, Word carry) {
 }
 
 Checked long_sub(Word b, Word a, Word borrow) {
-  return of(s(b) - s(a) - S64(borrow & 1));
+  return checked_exact(s(b) - s(a) - S64(borrow & 1));
 }
 
 DoubleWord long_diff(Word b, Word a, Word borrow) {

@@ -17,9 +17,19 @@ struct DoubleWord {
   Word low, high;
 };
 
-Checked checked_add(Word b, Word a);  // b + a
-Checked checked_sub(Word b, Word a);  // b - a
-Checked checked_mul(Word b, Word a);  // b * a
+// Inline: adc and add are among the commonest instructions.
+inline Checked checked_exact(std::int64_t exact) {
+  return {Word(std::uint64_t(exact)), exact < INT32_MIN || exact > INT32_MAX};
+}
+inline Checked checked_add(Word b, Word a) {  // b + a
+  return checked_exact(std::int64_t(std::int32_t(b)) + std::int32_t(a));
+}
+inline Checked checked_sub(Word b, Word a) {  // b - a
+  return checked_exact(std::int64_t(std::int32_t(b)) - std::int32_t(a));
+}
+inline Checked checked_mul(Word b, Word a) {  // b * a
+  return checked_exact(std::int64_t(std::int32_t(b)) * std::int32_t(a));
+}
 // div and rem: b / a, b rem a truncating toward zero; a = 0 (and MinInt / -1) is an error.
 Checked divide(Word b, Word a);
 Checked remainder(Word b, Word a);

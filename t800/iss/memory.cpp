@@ -34,7 +34,20 @@ void Memory::written_code(std::uint32_t offset) {
 }
 
 void Memory::copy(Word to, Word from, Word count) {
-  for (Word k = 0; k < count; ++k) set_byte(to + k, byte(from + k));
+  const std::uint32_t source = from - kMostNeg, target = to - kMostNeg;
+  // Within the installed memory, unwrapped, and not a forward copy over its own source (which
+  // repeats a pattern, as the chip's byte order does): memmove gives the same bytes.
+  const bool plain = source <= size_ && count <= size_ - source && target <= size_ &&
+                     count <= size_ - target && (target <= source || target - source >= count);
+  if (!plain) {
+    for (Word k = 0; k < count; ++k) set_byte(to + k, byte(from + k));
+    return;
+  }
+  if (count == 0) return;
+  std::memmove(&bytes_[target], &bytes_[source], count);
+  for (std::uint32_t line = target >> kLineShift; line <= (target + count - 1) >> kLineShift;
+       ++line)
+    if (code_lines_[line]) written_code(line << kLineShift);
 }
 
 void Memory::read(Word address, std::uint8_t* out, std::size_t count) const {

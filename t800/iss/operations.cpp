@@ -279,6 +279,7 @@ void Core::operate(const Decoded& d, TimedStep& t) {
       return;
     case Op::sethalterr:
       r.halt_on_error = true;
+      if (r.error) blocks_.stop_running_block();
       return;
     case Op::testhalterr:
       push(r.halt_on_error ? kTrue : kFalse);
