@@ -65,7 +65,7 @@ namespace t800::iss {
         slice_clock_ahead_ = known->last_start;
       } else {
         totals = stepper_.totals();
-        time_block(b, 0, before_last, variants);
+        time_block(b, 0, before_last, variants, 0);
         timed = before_last;
       }
       execute_block(b, b.size, stops, done, variants, t);
@@ -77,7 +77,7 @@ namespace t800::iss {
     slice_clock_ahead_ = 0;
     const Word at = b.start + b.instructions[std::size_t(done)].offset;
     instructions_ += done;
-    time_block(b, timed, done, variants);
+    time_block(b, timed, done, variants, 0);
     r_.iptr = at;
     memory_fault(fault, at);
     return true;
@@ -85,9 +85,10 @@ namespace t800::iss {
   stepping_ = false;
   instructions_ += done;
   blocks_.counts().instructions += done;
-  if (done == b.size && t.param != 0) variants |= Block::kLastParam;
+  const std::int64_t last_param = done == b.size ? t.param : 0;
 
-  const BlockTiming* known = done == b.size && timed == 0 ? b.timing(context, variants) : nullptr;
+  const BlockTiming* known =
+      done == b.size && timed == 0 ? b.timing(context, variants, last_param) : nullptr;
   if (known) {
     stepper_.resume(known->exit, entry + known->cycles, b.origin_word(), known->added);
     moved_ = false;
@@ -95,9 +96,9 @@ namespace t800::iss {
   } else {
     ++blocks_.counts().timed;
     if (!totals) totals = stepper_.totals();
-    time_block(b, timed, std::min(done, b.size - 1), variants);
+    time_block(b, timed, std::min(done, b.size - 1), variants, 0);
     const std::int64_t last_start = cycle() - entry;
-    time_block(b, std::max(timed, b.size - 1), done, variants);
+    time_block(b, std::max(timed, b.size - 1), done, variants, last_param);
     if (moved_) {
       moved_ = false;
       stepper_.restart_fetch();
@@ -105,6 +106,7 @@ namespace t800::iss {
     if (done == b.size) {
       BlockTiming& remembered = b.new_timing();
       remembered.variants = variants;
+      remembered.last_param = last_param;
       remembered.entry = context;
       remembered.cycles = cycle() - entry;
       remembered.last_start = last_start;
@@ -131,7 +133,8 @@ bool Core::run_block(std::int64_t before, std::int64_t last) {
   return ran;
 }
 
-void Core::time_block(const Block& b, int from, int to, std::uint64_t variants) {
+void Core::time_block(const Block& b, int from, int to, std::uint64_t variants,
+                      std::int64_t last_param) {
   for (int i = from; i < to; ++i) {
     const BlockInstruction& in = b.instructions[std::size_t(i)];
     TimedStep t;
@@ -141,7 +144,7 @@ void Core::time_block(const Block& b, int from, int to, std::uint64_t variants) 
     t.address = b.start + in.offset;
     t.data_external = (variants >> (2 * i)) & 1;
     t.real64 = (variants >> (2 * i + 1)) & 1;
-    if (i == b.size - 1 && (variants & Block::kLastParam)) t.param = 1;
+    if (i == b.size - 1) t.param = last_param;
     stepper_.step(t);
   }
 }

@@ -48,12 +48,13 @@ void BlockCache::invalidate_line(std::uint32_t line_offset) {
 
 // The instructions whose effects stay inside the processor's registers and memory: they neither
 // move control nor switch processes (but the last: call, cj, gcall, ret, and j and lend, where a
-// timeslice may be taken), nor touch the links, the timers or the clock. Whether their time depends
-// on their operands is the table's to say.
+// timeslice may be taken), nor touch the links, the timers or the clock. One whose time depends on
+// its operands (the table says so: cycles per place shifted or word moved, a second figure for a
+// branch taken) may be the last too, its parameter part of the timing's key.
 bool BlockCache::replayable(Op op, bool& last) const {
-  last = false;
   const InstructionTiming& row = table_[op];
-  if (!row.defined || row.per_param != 0 || row.data_words_per_param != 0) return false;
+  if (!row.defined) return false;
+  last = row.per_param != 0 || row.data_words_per_param != 0 || row.when_set != 0;
   switch (op) {
     case Op::j:
     case Op::lend:
@@ -61,9 +62,9 @@ bool BlockCache::replayable(Op op, bool& last) const {
     case Op::call:
     case Op::gcall:
     case Op::ret:
+    case Op::move:
       last = true;
-      // cj's taken figure and lend's looping one are a variant.
-      return op == Op::cj || op == Op::lend || row.when_set == 0;
+      return true;
     case Op::ldlp:
     case Op::ldnl:
     case Op::ldc:
@@ -119,10 +120,10 @@ bool BlockCache::replayable(Op op, bool& last) const {
     case Op::ldpri:
     case Op::seterr:
     case Op::ldmemstartval:
-      return row.when_set == 0;
+      return true;
     default:
       // The FPU's operations, but fpentry itself (its operation is a run-time value).
-      return op >= Op::fpldnlsn && op <= Op::fpudivby2 && op != Op::fpentry && row.when_set == 0;
+      return op >= Op::fpldnlsn && op <= Op::fpudivby2 && op != Op::fpentry;
   }
 }
 
@@ -149,6 +150,7 @@ Block& BlockCache::decode(Slot& slot, Word iptr) {
   b.ends_at_timeslice_point = false;
   b.timings = {};
   b.next_timing = 0;
+  std::int64_t last_bound = 0;
   try {
     b.code_external = memory_.external(iptr);
     Word at = iptr;
@@ -161,7 +163,8 @@ Block& BlockCache::decode(Slot& slot, Word iptr) {
         break;
       }
       b.instructions[std::size_t(b.size++)] = {d, std::uint16_t(at - iptr)};
-      b.bound += bound_of(d);
+      last_bound = bound_of(d);
+      b.bound += last_bound;
       at += d.bytes;
       b.span = at - iptr;
       if (last) {
@@ -173,6 +176,7 @@ Block& BlockCache::decode(Slot& slot, Word iptr) {
     // Past the installed memory (strict addressing): the block ends before it; stepping the
     // instruction there reports the fault.
   }
+  b.bound -= last_bound;  // the last instruction need only start in time (Block::bound)
   // Straight-line code fetches each of its words once (the first and last may be partial).
   if (b.code_external) b.bound += (std::int64_t(b.span) / 4 + 2) * access_cycles_;
   longest_span_ = std::max(longest_span_, b.span);

@@ -1,12 +1,13 @@
 // Straight-line code, decoded once and timed once for each way it runs. A block is the run of
-// instructions from an address up to the first that may leave it or whose time depends on its
-// operands (a process switch, a link or timer instruction, a shift); a jump, a loop end, a call, a
-// return or a conditional jump may end it. The core still executes every instruction of a block
-// (their effects are the program's); what it saves is the timing. The timing rule is deterministic:
-// the same instructions, started from equal timing contexts (timing_stepper.hpp) with their data in
-// the same places and their operands of the same precision, take the same cycles. So a block
-// remembers the outcome of the last few ways it ran and replays one when it recurs, cycle for cycle
-// what stepping every instruction gives (tests/iss/block_engine_test.cpp holds the two together).
+// instructions from an address up to the first that may leave it (a process switch, a link or timer
+// instruction); a jump, a loop end, a call, a return, a conditional jump, or an instruction whose
+// time depends on its operands (a shift, prod, move) may end it. The core still executes every
+// instruction of a block (their effects are the program's); what it saves is the timing. The timing
+// rule is deterministic: the same instructions, started from equal timing contexts
+// (timing_stepper.hpp) with their data in the same places and their operands of the same precision,
+// take the same cycles. So a block remembers the outcome of the last few ways it ran and replays
+// one when it recurs, cycle for cycle what stepping every instruction gives
+// (tests/iss/block_engine_test.cpp holds the two together).
 #pragma once
 
 #include <array>
@@ -25,11 +26,13 @@ struct BlockInstruction {
   std::uint16_t offset = 0;  // of its first byte, from the block's start
 };
 
-// One way a block ran, timed: the context it began in, its instructions' variants (see Block), the
-// IU's cycles from its start to its end, the context it left and the totals it added.
+// One way a block ran, timed: the context it began in, its instructions' variants (see Block) and
+// its last one's timing parameter (a cj taken, places shifted, words moved), the IU's cycles from
+// its start to its end, the context it left and the totals it added.
 struct BlockTiming {
   bool valid = false;
   std::uint64_t variants = 0;
+  std::int64_t last_param = 0;
   TimingContext entry, exit;
   std::int64_t cycles = 0;
   std::int64_t last_start = 0;  // from the block's start to its last instruction's
@@ -39,9 +42,7 @@ struct BlockTiming {
 struct Block {
   static constexpr int kMaxInstructions = 24;
   static constexpr int kTimings = 4;
-  // Variants: instruction i's data in external memory is bit 2i, REAL64 operands bit 2i + 1; the
-  // last instruction's timing parameter set (cj taken) is this bit.
-  static constexpr std::uint64_t kLastParam = std::uint64_t(1) << 63;
+  // Variants: instruction i's data in external memory is bit 2i, REAL64 operands bit 2i + 1.
   static std::uint64_t variant(int index, bool data_external, bool real64) {
     return std::uint64_t(int(data_external) | int(real64) << 1) << (2 * index);
   }
@@ -53,18 +54,22 @@ struct Block {
   // Its last instruction is a timeslice point (j, lend): it reads the clock when it starts, so it
   // executes once the cycle it starts at is known.
   bool ends_at_timeslice_point = false;
-  // The cycles from the block's start to its end are at most this plus the entry context's waits
-  // (the FPU's, the bus's, the buffered code's): each cycle is the IU working, or waiting for the
-  // FPU (at most the FPU's work before it), or for the bus (at most every access it makes).
+  // The cycles from the block's start to its last instruction's are at most this plus the entry
+  // context's waits (the FPU's, the bus's, the buffered code's): each cycle is the IU working, or
+  // waiting for the FPU (at most the FPU's work before it), or for the bus (at most every access
+  // it makes). The last instruction's own time does not count: stepping stops before an
+  // instruction, not inside one.
   std::int64_t bound = 0;
   std::array<BlockInstruction, kMaxInstructions> instructions;
   std::array<BlockTiming, kTimings> timings;
   int next_timing = 0;
 
   std::int64_t origin_word() const { return std::int64_t(start) / 4; }
-  const BlockTiming* timing(const TimingContext& entry, std::uint64_t variants) const {
+  const BlockTiming* timing(const TimingContext& entry, std::uint64_t variants,
+                            std::int64_t last_param) const {
     for (const BlockTiming& t : timings)
-      if (t.valid && t.variants == variants && t.entry == entry) return &t;
+      if (t.valid && t.variants == variants && t.last_param == last_param && t.entry == entry)
+        return &t;
     return nullptr;
   }
   // A remembered timing from `entry` whose instructions before the last ran as `variants` says:

@@ -19,6 +19,7 @@
 #include "t800/iss/blocks.hpp"
 #include "t800/iss/decoder.hpp"
 #include "t800/iss/fpu.hpp"
+#include "t800/iss/integer_arithmetic.hpp"
 #include "t800/iss/machine_words.hpp"
 #include "t800/iss/memory.hpp"
 #include "t800/iss/profile.hpp"
@@ -144,8 +145,10 @@ class Core {
   // Executes the block's instructions from `done` up to `to`; false if one stopped it first.
   bool execute_block(const Block& b, int to, std::uint64_t stops, int& done,
                      std::uint64_t& variants, TimedStep& t);
-  // Steps the timing rule through the block's instructions [from, to), as step() does one.
-  void time_block(const Block& b, int from, int to, std::uint64_t variants);
+  // Steps the timing rule through the block's instructions [from, to), as step() does one (the
+  // last with its timing parameter `last_param`).
+  void time_block(const Block& b, int from, int to, std::uint64_t variants,
+                  std::int64_t last_param);
   void execute(const Decoded& d, TimedStep& t);
   void operate(const Decoded& d, TimedStep& t);
   void fpu_operate(isa::Op op, TimedStep& t);
@@ -203,6 +206,13 @@ class Core {
   void unblocked(Word wptr) { waiting_.erase(wptr); }
 
   void data_at(TimedStep& t, Word address) { t.data_external = memory_.external(address); }
+  // A checked operation's result replaces A and B; an overflow sets Error.
+  void arithmetic_result(Checked x, isa::Op op) {
+    r_.a = x.value;
+    r_.b = r_.c;
+    if (x.overflow) [[unlikely]]
+      set_error(isa::mnemonic(op).data());
+  }
   // Control goes elsewhere (a jump taken, a call, a process switch): the prefetch buffer is emptied
   // once the instruction doing it is timed -- its own code was fetched before it ran -- or at once
   // between instructions.

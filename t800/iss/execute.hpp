@@ -24,8 +24,7 @@ namespace t800::iss {
       push(r_.wptr + 4 * n);
       return;
     case isa::Op::ldnl:
-      data_at(t, r_.a + 4 * n);
-      r_.a = memory_.word(r_.a + 4 * n);
+      r_.a = memory_.word(r_.a + 4 * n, t.data_external);
       return;
     case isa::Op::ldc:
       push(n);
@@ -34,8 +33,7 @@ namespace t800::iss {
       r_.a += 4 * n;
       return;
     case isa::Op::ldl:
-      data_at(t, r_.wptr + 4 * n);
-      push(ws(d.operand));
+      push(memory_.word(r_.wptr + 4 * n, t.data_external));
       return;
     case isa::Op::adc: {
       const auto sum = checked_add(r_.a, n);
@@ -72,12 +70,11 @@ namespace t800::iss {
       r_.a = r_.a == n ? kTrue : kFalse;
       return;
     case isa::Op::stl:
-      data_at(t, r_.wptr + 4 * n);
-      set_ws(d.operand, pop());
+      memory_.set_word(r_.wptr + 4 * n, r_.a, t.data_external);
+      pop();  // after the store: a faulting one leaves the stack as it was
       return;
     case isa::Op::stnl:
-      data_at(t, r_.a + 4 * n);
-      memory_.set_word(r_.a + 4 * n, r_.b);
+      memory_.set_word(r_.a + 4 * n, r_.b, t.data_external);
       r_.a = r_.c;
       return;
     // The operations most code uses, here so that they compile into the loops too.
@@ -127,6 +124,19 @@ namespace t800::iss {
       return;
     case isa::Op::not_:
       r_.a = ~r_.a;
+      return;
+    case isa::Op::add:
+      arithmetic_result(checked_add(r_.b, r_.a), d.op);
+      return;
+    case isa::Op::prod:
+      t.param = highest_bit(r_.a);
+      r_.a = r_.b * r_.a;
+      r_.b = r_.c;
+      return;
+    case isa::Op::ret:
+      r_.iptr = memory_.word(r_.wptr, t.data_external);
+      r_.wptr += 16;
+      control_moved();
       return;
     case isa::Op::mint:
       push(kMostNeg);

@@ -128,10 +128,4 @@ Word bit_reverse_bits(Word value, Word bits) {
   return bit_reverse(value) >> (32 - bits);
 }
 
-int highest_bit(Word value) {
-  int b = 0;
-  while (value >>= 1) ++b;
-  return b;
-}
-
 }  // namespace t800::iss

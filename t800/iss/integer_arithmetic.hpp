@@ -66,6 +66,8 @@ Word bit_reverse(Word value);
 Word bit_reverse_bits(Word value, Word bits);  // the low `bits` bits reversed
 
 // The bit number of the highest bit set (0 for 0 or 1): the datasheet's `b` in cycle figures.
-int highest_bit(Word value);
+inline int highest_bit(Word value) {
+  return value ? 31 - __builtin_clz(value) : 0;
+}
 
 }  // namespace t800::iss

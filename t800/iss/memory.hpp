@@ -45,6 +45,30 @@ class Memory {
     std::memcpy(&bytes_[o], &value, 4);
     if (code_lines_[o >> kLineShift]) written_code(o);
   }
+  // The same, saying whether the word is in external memory (external(address)): the commonest
+  // instructions want both, and one look at the address serves.
+  Word word(Word address, bool& is_external) const {
+    const std::uint32_t o = address - kMostNeg;
+    if (o >= size_) [[unlikely]] {
+      is_external = external(address);
+      return word(address);
+    }
+    is_external = o >= on_chip_;
+    Word w;
+    std::memcpy(&w, &bytes_[o & ~3u], 4);
+    return w;
+  }
+  void set_word(Word address, Word value, bool& is_external) {
+    const std::uint32_t o = address - kMostNeg;
+    if (o >= size_) [[unlikely]] {
+      is_external = external(address);
+      set_word(address, value);
+      return;
+    }
+    is_external = o >= on_chip_;
+    std::memcpy(&bytes_[o & ~3u], &value, 4);
+    if (code_lines_[o >> kLineShift]) written_code(o & ~3u);
+  }
   std::uint8_t byte(Word address) const { return bytes_[offset(address)]; }
   void set_byte(Word address, std::uint8_t value) {
     const std::uint32_t o = offset(address);

@@ -50,24 +50,15 @@ void Core::operate(const Decoded& d, TimedStep& t) {
       r.a = Word(std::int32_t(v) >> 2);
       return;
     }
-    case Op::prod:
-      t.param = highest_bit(r.a);
-      r.a = r.b * r.a;
-      r.b = r.c;
-      return;
-    case Op::add:
     case Op::sub:
     case Op::mul:
     case Op::div:
     case Op::rem: {
-      const Checked x = d.op == Op::add   ? checked_add(r.b, r.a)
-                        : d.op == Op::sub ? checked_sub(r.b, r.a)
+      arithmetic_result(d.op == Op::sub   ? checked_sub(r.b, r.a)
                         : d.op == Op::mul ? checked_mul(r.b, r.a)
                         : d.op == Op::div ? divide(r.b, r.a)
-                                          : remainder(r.b, r.a);
-      r.a = x.value;
-      r.b = r.c;
-      if (x.overflow) set_error(isa::mnemonic(d.op).data());
+                                          : remainder(r.b, r.a),
+                        d.op);
       return;
     }
     case Op::fmul: {
@@ -234,12 +225,6 @@ void Core::operate(const Decoded& d, TimedStep& t) {
     }
     case Op::gcall:
       std::swap(r.a, r.iptr);
-      control_moved();
-      return;
-    case Op::ret:
-      data_at(t, r.wptr);
-      r.iptr = memory_.word(r.wptr);
-      r.wptr += 16;
       control_moved();
       return;
     case Op::ldpi:

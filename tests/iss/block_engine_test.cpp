@@ -383,4 +383,50 @@ TEST(BlockEngine, ProcessesTimeslicedWithTheirCodeInExternalMemorySwitchAsSteppe
   expect_timeslices_as_stepped(5000);
 }
 
+// Instructions whose time depends on their operands end their blocks, and a block is replayed only
+// for the parameter it ran with: prod (the highest bit of its operand), shl (the places) and move
+// (the words), each with an operand that changes from one iteration to the next and recurs.
+TEST(BlockEngine, OperandTimedInstructionsEndBlocksTimedForTheirOperands) {
+  Twins t;
+  t.boot(R"(
+        ajw 64
+        ldc 400
+        stl 1
+loop:   ldl 1
+        ldc 7
+        and                  -- 0..7, recurring
+        stl 2
+        ldc 1
+        ldl 2
+        ldc 3
+        mul
+        shl                  -- 1 << 3k: prod's operand's highest bit changes
+        ldc 5
+        prod
+        stl 3
+        ldc 1
+        ldl 2
+        shl                  -- shl by 0..7 places
+        stl 4
+        ldl 2                -- move 4k bytes
+        ldc 4
+        prod
+        stl 5
+        ldc #80000E00
+        ldc #80020000
+        ldl 5
+        move
+        ldl 1
+        adc -1
+        stl 1
+        ldl 1
+        cj done
+        j loop
+done:   stopp
+)");
+  EXPECT_EQ(t.run(1 << 30), StopReason::idle);
+  t.expect_same();
+  EXPECT_GT(t.blocks.core.block_counts().replayed, 1000);
+}
+
 }  // namespace
