@@ -15,51 +15,51 @@ using t800::iss::kMostNeg;
 using t800::iss::Memory;
 using t800::iss::Word;
 
-constexpr std::int64_t kInstalled = 1 << 16;
+constexpr std::int64_t kMemoryBytes = 1 << 16;
 
-void fill(Memory& m, Word at, int count) {
+void fill_counting(Memory& m, Word at, int count) {
   for (int k = 0; k < count; ++k) m.set_byte(at + Word(k), std::uint8_t(k + 1));
 }
-std::vector<int> bytes(const Memory& m, Word at, int count) {
+std::vector<int> bytes_at(const Memory& m, Word at, int count) {
   std::vector<int> out;
   for (int k = 0; k < count; ++k) out.push_back(m.byte(at + Word(k)));
   return out;
 }
 
 TEST(MemoryCopy, ToALowerAddressOverItsSourceMovesTheBytesDown) {
-  Memory m(4096, kInstalled, AddressPolicy::wrap);
+  Memory m(4096, kMemoryBytes, AddressPolicy::wrap);
   const Word at = kMostNeg + 0x2000;
-  fill(m, at + 2, 6);  // 1..6 at +2..+7
+  fill_counting(m, at + 2, 6);  // 1..6 at +2..+7
   m.copy(at, at + 2, 6);
-  EXPECT_EQ(bytes(m, at, 8), (std::vector<int>{1, 2, 3, 4, 5, 6, 5, 6}));
+  EXPECT_EQ(bytes_at(m, at, 8), (std::vector<int>{1, 2, 3, 4, 5, 6, 5, 6}));
 }
 
 TEST(MemoryCopy, ToAHigherAddressOverItsSourceRepeatsTheFirstBytes) {
-  Memory m(4096, kInstalled, AddressPolicy::wrap);
+  Memory m(4096, kMemoryBytes, AddressPolicy::wrap);
   const Word at = kMostNeg + 0x2000;
-  fill(m, at, 3);  // 1 2 3
+  fill_counting(m, at, 3);  // 1 2 3
   m.copy(at + 2, at, 6);
   // Byte k goes to +2+k after bytes 0..k-1 have: 1 2 1 2 1 2 1 2.
-  EXPECT_EQ(bytes(m, at, 8), (std::vector<int>{1, 2, 1, 2, 1, 2, 1, 2}));
+  EXPECT_EQ(bytes_at(m, at, 8), (std::vector<int>{1, 2, 1, 2, 1, 2, 1, 2}));
 }
 
 TEST(MemoryCopy, PastTheInstalledMemoryWrapsWithTheAddresses) {
-  Memory m(4096, kInstalled, AddressPolicy::wrap);
-  const Word end = kMostNeg + Word(kInstalled);
-  fill(m, kMostNeg + 0x100, 8);
+  Memory m(4096, kMemoryBytes, AddressPolicy::wrap);
+  const Word end = kMostNeg + Word(kMemoryBytes);
+  fill_counting(m, kMostNeg + 0x100, 8);
   m.copy(end - 4, kMostNeg + 0x100, 8);
-  EXPECT_EQ(bytes(m, end - 4, 4), (std::vector<int>{1, 2, 3, 4}));
-  EXPECT_EQ(bytes(m, kMostNeg, 4), (std::vector<int>{5, 6, 7, 8}));
+  EXPECT_EQ(bytes_at(m, end - 4, 4), (std::vector<int>{1, 2, 3, 4}));
+  EXPECT_EQ(bytes_at(m, kMostNeg, 4), (std::vector<int>{5, 6, 7, 8}));
 }
 
 TEST(MemoryCopy, PastTheInstalledMemoryIsAFaultUnderStrictAddressing) {
-  Memory m(4096, kInstalled, AddressPolicy::strict);
-  const Word end = kMostNeg + Word(kInstalled);
+  Memory m(4096, kMemoryBytes, AddressPolicy::strict);
+  const Word end = kMostNeg + Word(kMemoryBytes);
   EXPECT_THROW(m.copy(end - 4, kMostNeg + 0x100, 8), t800::iss::MemoryFault);
 }
 
 TEST(MemoryCopy, OverCodeTellsTheDecoderOfEveryCodeLineItWrites) {
-  Memory m(4096, kInstalled, AddressPolicy::wrap);
+  Memory m(4096, kMemoryBytes, AddressPolicy::wrap);
   std::vector<std::uint32_t> told;
   m.on_code_written([&](std::uint32_t line) { told.push_back(line); });
   m.mark_code(0x3000);  // lines at 0x3000 and 0x3020 hold code, 0x3010 does not
