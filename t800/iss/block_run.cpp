@@ -30,12 +30,15 @@ namespace t800::iss {
 [[gnu::always_inline]] inline bool Core::run_one_block(std::int64_t before, std::int64_t last) {
   Block& b = blocks_.at(r_.iptr);
   if (b.size == 0) return false;
-  const std::int64_t entry = cycle();
-  if (entry + b.bound >= before) {  // the check below, before taking a context for nothing
+  // Declined: its instructions are stepped, and none of them starts a block of its own.
+  const auto decline = [&] {
     stepping_from_ = b.start;
     stepping_to_ = b.start + b.span;
     return false;
-  }
+  };
+  const std::int64_t entry = cycle();
+  // The check below, before taking a context for nothing.
+  if (entry + b.bound >= before) return decline();
   stepper_.set_code_external(b.code_external);
   TimingContext context;
   const bool captured = stepper_.context(b.origin_word(), context);
@@ -44,11 +47,8 @@ namespace t800::iss {
   const std::int32_t code_wait =
       *std::max_element(context.code_ready.begin(), context.code_ready.end());
   if (!captured || instructions_ + b.size > last ||
-      entry + b.bound + context.fpu + context.bus + code_wait >= before) {
-    stepping_from_ = b.start;
-    stepping_to_ = b.start + b.span;
-    return false;
-  }
+      entry + b.bound + context.fpu + context.bus + code_wait >= before)
+    return decline();
 
   const std::uint64_t stops = blocks_.stops();
   std::uint64_t variants = 0;

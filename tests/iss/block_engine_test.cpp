@@ -250,6 +250,33 @@ TEST(BlockEngine, AFaultInsideABlockHaltsThereWithTheInstructionsBeforeItDone) {
 // who ran last, how often that changed and at which of their iterations: a timeslice is taken at a
 // j or lend that ends a block, as of the cycle that instruction starts (not the block's), so the
 // two must switch at the same instructions as when stepped. `padding` as in mixed_loop.
+// Process `id` notes that it runs after the other: who ran last, the count of switches, and in the
+// log the switch's index with this process's count then.
+std::string note_switch(int id) {
+  return "        ldc " + std::to_string(id) + R"(
+        ldc #80000F00
+        stnl 0
+        ldc #80000F00
+        ldnl 1
+        adc 1
+        dup
+        ldc #80000F00
+        stnl 1
+        ldl 1
+        rev
+        ldc #80020000
+        wsub
+        stnl 0
+)";
+}
+
+// Nine divisions, some 400 cycles of straight-line code.
+std::string divisions() {
+  std::string code;
+  for (int k = 0; k < 9; ++k) code += "        ldc 7\n        div\n";
+  return code;
+}
+
 std::string timesliced_loops(int padding, int iterations) {
   const std::string n = std::to_string(iterations);
   return R"(
@@ -273,45 +300,16 @@ loop:   ldc #80000F00        -- who ran last: if not this one, a switch
         eqc 1
         cj switched
         j counted
-switched: ldc 1
-        ldc #80000F00
-        stnl 0
-        ldc #80000F00
-        ldnl 1
-        adc 1
-        dup
-        ldc #80000F00
-        stnl 1
-        ldl 1                -- the log: the switch's index, this one's count then
-        rev
-        ldc #80020000
-        wsub
-        stnl 0
-counted: ldl 1
+switched:
+)" + note_switch(1) +
+         R"(counted: ldl 1
         adc -1
         stl 1
         ldl 1
         cj done
         ldl 1                -- a long block, so a tick is likely to pass between its start and j
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        stl 3
+)" + divisions() +
+         R"(        stl 3
         j loop
 done:   stopp
 second: ldc 0
@@ -324,40 +322,11 @@ again:  ldc #80000F00
         eqc 2
         cj switch2
         j other
-switch2: ldc 2
-        ldc #80000F00
-        stnl 0
-        ldc #80000F00
-        ldnl 1
-        adc 1
-        dup
-        ldc #80000F00
-        stnl 1
-        ldl 1                -- the log: the switch's index, this one's count then
-        rev
-        ldc #80020000
-        wsub
-        stnl 0
-other:  ldc 1000             -- and another before lend
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        ldc 7
-        div
-        stl 3
+switch2:
+)" + note_switch(2) +
+         R"(other:  ldc 1000             -- and another before lend
+)" + divisions() +
+         R"(        stl 3
         ldlp 1
         ldc ended - again
         lend
