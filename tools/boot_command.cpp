@@ -43,6 +43,7 @@ struct BootArgs {
   TraceFiles traces;
   double max_simulated_s = 0, max_host_s = 0;
   std::int64_t max_instructions = 0;
+  bool no_run_ahead = false;
   std::string clock = "simulated";
   std::int64_t clock_start = -1;
   std::vector<std::string> program_args;
@@ -132,6 +133,7 @@ Scene boot_scene(const BootArgs& args) {
   scene.workload.set("memory", args.memory);
   scene.workload.set("addressing", std::string(args.strict ? "strict" : "wrap"));
   scene.workload.set("max_instructions", args.max_instructions);
+  scene.workload.set("run_ahead", !args.no_run_ahead);
   scene.workload.set("profile", args.profile);
   scene.workload.set("clock", args.clock);
   scene.workload.set("clock_start", args.clock_start);
@@ -315,6 +317,9 @@ void add_boot_command(CLI::App& app) {
   cmd->add_option("--max-instructions", args->max_instructions,
                   "stop when a processor has executed this many instructions (0: no limit)")
       ->type_name("N");
+  cmd->add_flag("--no-run-ahead", args->no_run_ahead,
+                "never run a processor past the look-ahead: slower, the same run but for where "
+                "link DMA stalls fall (docs/iss.md, \"Running ahead\")");
   cmd->callback([args] { run_command([&] { return boot_file(*args); }); });
 }
 

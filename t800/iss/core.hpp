@@ -112,6 +112,15 @@ class Core {
   // Link DMA took `cycles` memory cycles the CPU waited for (docs/t800-timing.md 6).
   void stall(std::int64_t cycles) { stepper_.wait_until(cycle() + cycles); }
 
+  // A run that may have to be undone (a processor of a network running ahead of its neighbours,
+  // docs/iss.md "Running ahead"): checkpoint() keeps the core's state and starts the memory's undo
+  // log; rollback() goes back to that state, as if the run since had not happened; commit() lets
+  // it stand. A profile's tallies are not kept: a profiled core is not rolled back.
+  void checkpoint();
+  void rollback();
+  void commit();
+  bool checkpointed() const { return checkpoint_ != nullptr; }
+
   std::int64_t cycle() const { return stepper_.iu_free(); }
   // The earliest cycle a waiting timer fires, or none.
   std::optional<std::int64_t> next_timer_cycle() const;
@@ -223,6 +232,12 @@ class Core {
       stepper_.restart_fetch();
   }
 
+  // Every member below that a run changes is kept by checkpoint() (checkpoint.cpp), memory by its
+  // undo log; the caches (decoded_, blocks_) hold only what memory says, and follow its undo.
+  struct Checkpoint;
+  template <class Keep>
+  void each_kept(Checkpoint& c, Keep keep);
+  std::unique_ptr<Checkpoint> checkpoint_;
   const ProcessorModel& processor_;
   Memory memory_;
   DecodeCache decoded_;
@@ -256,6 +271,25 @@ class Core {
   std::unordered_map<Word, WaitingProcess> waiting_;
   std::optional<HaltReport> halt_;
   std::string error_by_;  // the instruction that set Error last
+};
+
+// What Core::checkpoint keeps (checkpoint.cpp): every member a run changes but memory.
+struct Core::Checkpoint {
+  explicit Checkpoint(const TimingStepper& s) : stepper(s) {}  // the rest: Core::each_kept
+  TimingStepper stepper;
+  BlockCounts block_counts;
+  Word stepping_from, stepping_to;
+  Registers registers;
+  Fpu fpu, saved_low_fpu;
+  std::int64_t instructions;
+  bool running, low_interrupted, timers_running, j0_break;
+  Word clock_base[2];
+  double clock_base_ns;
+  std::int64_t next_timer, slice_start, slice_clock_ahead;
+  Word move2d_length, move2d_dest_stride, move2d_source_stride;
+  std::unordered_map<Word, WaitingProcess> waiting;
+  std::optional<HaltReport> halt;
+  std::string error_by;
 };
 
 }  // namespace t800::iss

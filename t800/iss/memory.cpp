@@ -44,10 +44,20 @@ void Memory::copy(Word to, Word from, Word count) {
     return;
   }
   if (count == 0) return;
+  if (logging_)
+    for (std::uint32_t o = target & ~3u; o < target + count; o += 4) log(o);
   std::memmove(&bytes_[target], &bytes_[source], count);
   for (std::uint32_t line = target >> kLineShift; line <= (target + count - 1) >> kLineShift;
        ++line)
     if (code_lines_[line]) written_code(line << kLineShift);
+}
+
+void Memory::undo() {
+  for (auto it = undo_.rbegin(); it != undo_.rend(); ++it) {
+    std::memcpy(&bytes_[it->offset], &it->old, 4);
+    if (code_lines_[it->offset >> kLineShift]) written_code(it->offset);
+  }
+  drop_undo_log();
 }
 
 void Memory::read(Word address, std::uint8_t* out, std::size_t count) const {

@@ -42,6 +42,8 @@ class Memory {
   }
   void set_word(Word address, Word value) {
     const std::uint32_t o = offset(address & ~3u);
+    if (logging_) [[unlikely]]
+      log(o);
     std::memcpy(&bytes_[o], &value, 4);
     if (code_lines_[o >> kLineShift]) written_code(o);
   }
@@ -66,12 +68,16 @@ class Memory {
       return;
     }
     is_external = o >= on_chip_;
+    if (logging_) [[unlikely]]
+      log(o);
     std::memcpy(&bytes_[o & ~3u], &value, 4);
     if (code_lines_[o >> kLineShift]) written_code(o & ~3u);
   }
   std::uint8_t byte(Word address) const { return bytes_[offset(address)]; }
   void set_byte(Word address, std::uint8_t value) {
     const std::uint32_t o = offset(address);
+    if (logging_) [[unlikely]]
+      log(o);
     bytes_[o] = value;
     if (code_lines_[o >> kLineShift]) written_code(o);
   }
@@ -93,6 +99,19 @@ class Memory {
   std::int64_t on_chip_bytes() const { return on_chip_; }
   AddressPolicy policy() const { return policy_; }
 
+  // A run that may have to be undone (Core::checkpoint): from start_undo_log on, every write keeps
+  // the word it overwrites; undo() puts them back, newest first, and stops the log, as does
+  // drop_undo_log() (the run stands).
+  void start_undo_log() {
+    undo_.clear();
+    logging_ = true;
+  }
+  void undo();
+  void drop_undo_log() {
+    undo_.clear();
+    logging_ = false;
+  }
+
   // The decoder marks the lines it has cached code from, and is told when one is written.
   void mark_code(std::uint32_t offset) { code_lines_[offset >> kLineShift] = 1; }
   void on_code_written(std::function<void(std::uint32_t line_offset)> hook) {
@@ -102,6 +121,13 @@ class Memory {
  private:
   std::uint32_t wrap(Word address) const;
   void written_code(std::uint32_t offset);
+  // The word holding `offset` before it is written.
+  void log(std::uint32_t offset) {
+    const std::uint32_t o = offset & ~3u;
+    Word old;
+    std::memcpy(&old, &bytes_[o], 4);
+    undo_.push_back({o, old});
+  }
 
   std::uint32_t size_, on_chip_;
   AddressPolicy policy_;
@@ -109,6 +135,12 @@ class Memory {
   std::vector<std::uint8_t> bytes_;
   std::vector<std::uint8_t> code_lines_;
   std::function<void(std::uint32_t)> code_written_;
+  struct Overwritten {
+    std::uint32_t offset;
+    Word old;
+  };
+  std::vector<Overwritten> undo_;
+  bool logging_ = false;
 };
 
 }  // namespace t800::iss

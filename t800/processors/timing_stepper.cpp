@@ -62,18 +62,39 @@ std::int64_t TimingStepper::Fetcher::ready_external(std::int64_t begin, std::int
     words_.pop_front();
     ++first_;
   }
-  while (first_ + std::int64_t(words_.size()) <= last) words_.push_back(bus_.access(at, 1));
+  while (first_ + std::int64_t(words_.size()) <= last) words_.push_back(bus_->access(at, 1));
   return std::max(at, words_[std::size_t(last - first_)]);
 }
 
 void TimingStepper::Fetcher::started_external(std::int64_t begin, std::int64_t at) {
   const std::int64_t next = begin / 4 + 1;
-  if (first_ + std::int64_t(words_.size()) == next) words_.push_back(bus_.access(at, 1));
+  if (first_ + std::int64_t(words_.size()) == next) words_.push_back(bus_->access(at, 1));
 }
 
 TimingStepper::TimingStepper(const InstructionTimingTable& table, int external_cycles,
                              bool code_external)
-    : table_(table), bus_{0, external_cycles}, fetch_(code_external, bus_) {}
+    : table_(&table), bus_{0, external_cycles}, fetch_(code_external, bus_) {}
+
+TimingStepper::TimingStepper(const TimingStepper& other)
+    : table_(other.table_),
+      bus_(other.bus_),
+      fetch_(other.fetch_),
+      iu_(other.iu_),
+      fpu_(other.fpu_),
+      totals_(other.totals_) {
+  fetch_.use_bus(bus_);
+}
+
+TimingStepper& TimingStepper::operator=(const TimingStepper& other) {
+  table_ = other.table_;
+  bus_ = other.bus_;
+  fetch_ = other.fetch_;
+  fetch_.use_bus(bus_);
+  iu_ = other.iu_;
+  fpu_ = other.fpu_;
+  totals_ = other.totals_;
+  return *this;
+}
 
 void TimingStepper::wait_until(std::int64_t cycle) {
   iu_ = std::max(iu_, cycle);
@@ -91,8 +112,8 @@ namespace {
 }  // namespace
 
 InstructionTime TimingStepper::step(const TimedStep& in) {
-  const InstructionTiming& t = table_[in.op];
-  if (!t.defined) no_such_instruction(table_.family, in.op);
+  const InstructionTiming& t = (*table_)[in.op];
+  if (!t.defined) no_such_instruction(table_->family, in.op);
   const int cycles = t.cycles_for(in.param, in.real64) * int(in.rows);
   const bool uses_fpu = t.unit != Unit::integer;
 

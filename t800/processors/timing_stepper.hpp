@@ -83,6 +83,9 @@ class TimingStepper {
   // `external_cycles`: one external access, wait states included; `code_external`: where the
   // instructions are fetched from (the ISS says so per instruction through set_code_external).
   TimingStepper(const InstructionTimingTable& table, int external_cycles, bool code_external);
+  // A copy is a saved state to go back to (the ISS undoes a run that ran ahead too far).
+  TimingStepper(const TimingStepper& other);
+  TimingStepper& operator=(const TimingStepper& other);
 
   // Times `step` after the instructions before it; throws std::logic_error if the family has no
   // such instruction.
@@ -118,7 +121,9 @@ class TimingStepper {
   // Code in external memory, fetched a word at a time, one word ahead of execution.
   class Fetcher {
    public:
-    Fetcher(bool external, Bus& bus) : external_(external), bus_(bus) {}
+    Fetcher(bool external, Bus& bus) : external_(external), bus_(&bus) {}
+    // A copy's fetches go to its own stepper's bus.
+    void use_bus(Bus& bus) { bus_ = &bus; }
     // The instruction in [begin, end) may start at `at`; when its code is in.
     // (Code on chip, the common case, is decided inline: the ISS asks for every instruction.)
     std::int64_t ready(std::int64_t begin, std::int64_t end, std::int64_t at) {
@@ -141,7 +146,7 @@ class TimingStepper {
     std::int64_t ready_external(std::int64_t begin, std::int64_t end, std::int64_t at);
     void started_external(std::int64_t begin, std::int64_t at);
     bool external_;
-    Bus& bus_;
+    Bus* bus_;
     // When each code word from first_ on is in the processor: the words an instruction spans
     // and the one fetched ahead, so a few (an instruction is at most 255 bytes, 65 words).
     class Words {
@@ -165,7 +170,7 @@ class TimingStepper {
     Words words_;
   };
 
-  const InstructionTimingTable& table_;
+  const InstructionTimingTable* table_;
   Bus bus_;
   Fetcher fetch_;
   std::int64_t iu_ = 0, fpu_ = 0;

@@ -383,7 +383,7 @@ TEST(Boot, AWatchedLinkLetsTheCoreRunADataPacketAhead) {
   const std::string file =
       assemble(dir, "watch", example_with("watch.s", {{"iterations", "20000"}}));
   ASSERT_FALSE(file.empty());
-  const Booted b = boot(dir, file, "--network " + kTopologies + "pair.toml");
+  const Booted b = boot(dir, file, "--network " + kTopologies + "pair.toml --no-run-ahead");
   EXPECT_EQ(b.output.exit_code, 7) << b.output.out;
   ASSERT_TRUE(b.report.is_object()) << b.output.out;
   for (const auto& p : b.report["workload"]["processors"]) {
@@ -391,6 +391,94 @@ TEST(Boot, AWatchedLinkLetsTheCoreRunADataPacketAhead) {
     EXPECT_GT(p["cycles"].get<double>(), 200000) << p;
     EXPECT_LT(p["synchronisations"].get<double>(), p["cycles"].get<double>() / 8) << p;
   }
+}
+
+// Running ahead (workloads/boot/iss_node.cpp, "running ahead") changes only where cores
+// synchronise, on which only where DMA stalls fall depends (docs/iss.md, "Running ahead"): these
+// programs must run exactly as with the look-ahead alone (--no-run-ahead), processor for
+// processor, cycle for cycle -- their instructions, cycles, DMA stalls, where they end and when.
+// watch.s is the case it is for: both cores compute with a guard watched; made to count twice on
+// P1, it has P0's byte arrive while P1 has run ahead, so that run must be undone. pingpong.s and
+// chain.s move data all the time, so little can run ahead: what does must come out the same.
+TEST(Boot, RunningAheadRunsEveryProgramAsTheLookAheadAloneDoes) {
+  const auto dir = scratch("run-ahead");
+  struct Case {
+    std::string name, source, topology;
+  };
+  const std::string watch = example_with("watch.s", {{"iterations", "20000"}});
+  std::string longer = watch;
+  const std::string p1_counts = "        call count\n        stopp\n-- spawn";
+  ASSERT_NE(longer.find(p1_counts), std::string::npos);
+  longer.replace(longer.find(p1_counts), p1_counts.size(),
+                 "        call count\n        call count\n        stopp\n-- spawn");
+  const std::vector<Case> cases = {
+      {"watch", watch, "pair.toml"},
+      {"watch-longer", longer, "pair.toml"},
+      {"pingpong", example_with("pingpong.s", {{"bytes", "100"}, {"rounds", "20"}}), "pair.toml"},
+      {"chain", example_with("chain.s", {{"iterations", "2000"}}), "pipeline-6.toml"},
+  };
+  for (const Case& c : cases) {
+    const std::string file = assemble(dir, c.name, c.source);
+    ASSERT_FALSE(file.empty()) << c.name;
+    const std::string network = "--network " + kTopologies + c.topology;
+    const Booted ahead = boot(dir, file, network);
+    const Booted alone = boot(dir, file, network + " --no-run-ahead");
+    ASSERT_TRUE(ahead.report.is_object()) << c.name << ": " << ahead.output.out;
+    ASSERT_TRUE(alone.report.is_object()) << c.name << ": " << alone.output.out;
+    EXPECT_EQ(ahead.output.exit_code, alone.output.exit_code) << c.name;
+    EXPECT_EQ(ahead.report["simulated_us"], alone.report["simulated_us"]) << c.name;
+    // The utilisation trace and the links' traffic: the same intervals, the same messages.
+    EXPECT_EQ(ahead.report["processors"], alone.report["processors"]) << c.name;
+    EXPECT_EQ(ahead.report["links"], alone.report["links"]) << c.name;
+    const auto& w = ahead.report["workload"];
+    const auto& v = alone.report["workload"];
+    EXPECT_EQ(w["exit_status"], v["exit_status"]) << c.name;
+    EXPECT_EQ(w["ended"], v["ended"]) << c.name;
+    EXPECT_EQ(w["instructions"], v["instructions"]) << c.name;
+    ASSERT_EQ(w["processors"].size(), v["processors"].size()) << c.name;
+    std::int64_t runs = 0, undone = 0, syncs_ahead = 0, syncs_alone = 0;
+    for (std::size_t i = 0; i < w["processors"].size(); ++i) {
+      const auto& p = w["processors"][i];
+      const auto& q = v["processors"][i];
+      for (const char* key : {"instructions", "cycles", "dma_stall_cycles", "state"})
+        EXPECT_EQ(p[key], q[key]) << c.name << " " << p["name"] << " " << key;
+      EXPECT_EQ(q["runs_ahead"], 0) << c.name;
+      runs += p["runs_ahead"].get<std::int64_t>();
+      undone += p["runs_ahead_undone"].get<std::int64_t>();
+      syncs_ahead += p["synchronisations"].get<std::int64_t>();
+      syncs_alone += q["synchronisations"].get<std::int64_t>();
+    }
+    if (c.name == "watch") {
+      // Some 220,000 cycles each with a guard watched: slices of 1 ms (20,000 cycles), not data
+      // packets of 11 cycles.
+      EXPECT_GT(runs, 10) << w;
+      EXPECT_LT(syncs_ahead * 50, syncs_alone) << w;
+    }
+    if (c.name == "watch-longer") {
+      EXPECT_GE(undone, 1) << w;  // P1's run over P0's byte
+    }
+  }
+}
+
+// A core that has run ahead when another processor's limit ends the run is brought back to the
+// instant the run ended: what it reports ran before the end, as with the look-ahead alone.
+TEST(Boot, ACoreAheadWhenTheRunEndsReportsWhereTheEndFoundIt) {
+  const auto dir = scratch("run-ahead-stopped");
+  const std::string file =
+      assemble(dir, "watch", example_with("watch.s", {{"iterations", "20000"}}));
+  ASSERT_FALSE(file.empty());
+  const Booted b =
+      boot(dir, file, "--network " + kTopologies + "pair.toml --max-instructions 60000");
+  ASSERT_TRUE(b.report.is_object()) << b.output.out;
+  const double end_ns = b.report["simulated_us"].get<double>() * 1000;
+  for (const auto& p : b.report["workload"]["processors"]) {
+    // A T800-20's cycle is 50 ns; a data packet (550 ns) and an instruction is as far as the
+    // look-ahead takes a core past the end.
+    const double at_ns = p["cycles"].get<double>() * 50;
+    EXPECT_LE(at_ns, end_ns + 1000) << p;
+    EXPECT_GE(at_ns, end_ns - 1000) << p;
+  }
+  EXPECT_GT(b.report["workload"]["processors"][1]["runs_ahead"].get<int>(), 0);
 }
 
 // A run stopped by a limit still says what ran: instructions and cycles per processor, and where

@@ -12,6 +12,7 @@
 
 namespace {
 
+using iss_test::mixed_loop;
 using iss_test::TestMachine;
 using t800::iss::AddressPolicy;
 using t800::iss::StopReason;
@@ -88,78 +89,6 @@ struct Twins {
 
   TestMachine blocks, steps;
 };
-
-// A loop whose blocks recur with their data on chip (even counts) and off it (odd counts), their
-// FPU operands REAL32 and REAL64, while a high-priority process waits on the timer and interrupts
-// it; `padding` bytes in front put the code in external memory (the on-chip RAM is 4 KB).
-std::string mixed_loop(int padding, int iterations) {
-  return R"(
-        j start
-        .space )" +
-         std::to_string(padding) + R"(
-start:  ajw 64
-        ldc 0
-        sttimer
-        ldc child - next
-        ldpi
-next:   stl -21              -- the child's Iptr, below its workspace
-        ldlp -20             -- its Wdesc: priority 0, high
-        runp
-        ldc )" +
-         std::to_string(iterations) +
-         R"(
-        stl 1
-loop:   ldl 1
-        ldc 1
-        and
-        cj even
-        ldc #80020000        -- odd: data in external memory, REAL64
-        stl 3
-        ldc #80020000
-        fpldnldb
-        j body
-even:   ldc #80000F00        -- even: data on chip, REAL32
-        stl 3
-        ldc #80000F00
-        fpldnlsn
-body:   ldl 3
-        ldnl 0
-        adc 3
-        ldl 3
-        stnl 0
-        fpdup
-        fpadd
-        ldl 1
-        ldl 1
-        mul
-        ldl 3
-        stnl 1
-        ldl 1
-        ldc 1
-        and
-        cj single
-        ldl 3
-        fpstnldb
-        j counted
-single: ldl 3
-        fpstnlsn
-counted: ldl 1
-        adc -1
-        stl 1
-        ldl 1
-        cj done
-        j loop
-done:   ldl -19              -- what the child saw
-        stl 2
-        stopp
-child:  ldtimer
-        adc 40
-        tin
-        ldtimer
-        stl 1
-        stopp
-)";
-}
 
 // `padding`: 16 bytes keep the code on chip, 5000 put it in external memory.
 void expect_loop_runs_as_stepped(int padding) {

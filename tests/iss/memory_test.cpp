@@ -69,4 +69,46 @@ TEST(MemoryCopy, OverCodeTellsTheDecoderOfEveryCodeLineItWrites) {
   EXPECT_EQ(told, (std::vector<std::uint32_t>{0x3000, 0x3020}));
 }
 
+// The undo log (Memory::start_undo_log) is what lets a core go back to a checkpoint: every way of
+// writing keeps what it overwrote, and undo() puts it all back, telling the decoder of code lines
+// it restores.
+TEST(MemoryUndo, EveryKindOfWriteIsUndoneToTheBytesBefore) {
+  Memory m(4096, kMemoryBytes, AddressPolicy::wrap);
+  fill_counting(m, kMostNeg + 0x0F00, 0x300);  // on chip and off (the on-chip RAM is 4 KB)
+  const std::vector<int> before = bytes_at(m, kMostNeg + 0x0F00, 0x300);
+  std::vector<std::uint32_t> told;
+  m.on_code_written([&](std::uint32_t line) { told.push_back(line); });
+  m.mark_code(0x1100);
+  m.start_undo_log();
+  m.set_word(kMostNeg + 0x0F10, 0xDEADBEEF);
+  bool external = false;
+  m.set_word(kMostNeg + 0x1002, 0x01020304, external);  // unaligned: the word at 0x1000
+  m.set_word(kMostNeg + 0x1004, 0x05060708, external);
+  m.set_byte(kMostNeg + 0x0F21, 0xAA);
+  m.copy(kMostNeg + 0x1040, kMostNeg + 0x0F00, 0x81);  // plain, an odd length
+  m.copy(kMostNeg + 0x0F81, kMostNeg + 0x0F80, 0x10);  // forward over its source: byte by byte
+  const std::uint8_t in[5] = {9, 9, 9, 9, 9};
+  m.write(kMostNeg + 0x10FE, in, 5);          // into the code line at 0x1100
+  m.mark_code(0x1100);                        // decoded again after it, as a run executing it would
+  m.set_word(kMostNeg + 0x0F10, 0x11111111);  // the same word again
+  EXPECT_NE(bytes_at(m, kMostNeg + 0x0F00, 0x300), before);
+  told.clear();
+  m.undo();
+  EXPECT_EQ(bytes_at(m, kMostNeg + 0x0F00, 0x300), before);
+  EXPECT_EQ(told, (std::vector<std::uint32_t>{0x1100}));
+  // Undone, the log is off: a write now stands.
+  m.set_byte(kMostNeg + 0x0F00, 0x55);
+  m.undo();
+  EXPECT_EQ(m.byte(kMostNeg + 0x0F00), 0x55);
+}
+
+TEST(MemoryUndo, ADroppedLogLeavesTheWritesInPlace) {
+  Memory m(4096, kMemoryBytes, AddressPolicy::wrap);
+  m.start_undo_log();
+  m.set_word(kMostNeg + 0x2000, 7);
+  m.drop_undo_log();
+  m.undo();
+  EXPECT_EQ(m.word(kMostNeg + 0x2000), 7u);
+}
+
 }  // namespace

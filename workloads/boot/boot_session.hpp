@@ -25,6 +25,9 @@ struct ProcessorAccount {
   std::int64_t instructions = 0;
   std::int64_t cycles = 0;
   std::int64_t synchronisations = 0;  // times the core stopped for SystemC
+  // Runs past the look-ahead (IssNode::run_ahead): how many, how many were undone by an arrival,
+  // and the cycles those had run (host work done twice).
+  std::int64_t runs_ahead = 0, runs_ahead_undone = 0, cycles_undone = 0;
   std::int64_t dma_stall_cycles = 0;
   t800::iss::BlockCounts blocks;  // how the ISS ran its code (t800/iss/blocks.hpp)
   std::optional<t800::iss::HaltReport> halt;

@@ -305,19 +305,27 @@ void IssNode::watch_input(int link, bool on) {
         ports_[link]->watch([this, link] { post({LinkEvent::Kind::arrived, link, {}}); });
     });
   } else {
-    ports_[link]->unwatch();
+    defer([this, link] { ports_[link]->unwatch(); });
   }
 }
 
 void IssNode::reset(int link, bool output) {
   if (output) {
     output_busy_[link] = false;
-    if (ports_[link]) ports_[link]->reset_output();
+    if (ports_[link]) defer([this, link] { ports_[link]->reset_output(); });
   } else {
     input_busy_[link] = false;
     watching_[link] = false;
-    if (ports_[link]) ports_[link]->reset_input();
+    if (ports_[link]) defer([this, link] { ports_[link]->reset_input(); });
   }
+}
+
+// A change to a port made by the core: at once, or while running ahead once the run stands.
+void IssNode::defer(std::function<void()> port_change) {
+  if (ahead_)
+    deferred_.push_back(std::move(port_change));
+  else
+    port_change();
 }
 
 void IssNode::deliver_link_events() {
@@ -388,6 +396,107 @@ void IssNode::account() {
   a.blocks = core_.block_counts();
 }
 
+std::int64_t IssNode::instruction_budget() const {
+  if (options_.max_instructions > 0) return options_.max_instructions - core_.instructions();
+  return kNever / 2;
+}
+
+// --- running ahead ----------------------------------------------------------------------------
+//
+// With its inputs and ALT guards waiting on links nothing is coming on, the core may run only one
+// data packet past the next instant anything else is due (lookahead_bound): two busy neighbours
+// then step each other on a packet at a time, a synchronisation every few instructions. But in
+// that state only an arrival can change what the core does, and the core shows nothing of its own
+// before it stops for a transfer it starts. So it runs on from a checkpoint to the end of the
+// slice (or to that stop), and SystemC is left to catch up: if nothing has started towards any of
+// its links by the run's end, and nothing else was delivered, the run stands, exactly as the
+// packet-by-packet one would have gone; if something has, the core goes back to the checkpoint
+// and runs again only to the instant it was found out, and on by the look-ahead from there.
+
+bool IssNode::may_run_ahead() const {
+  if (!options_.run_ahead || options_.profile || core_.idle() || !inbox_.empty() ||
+      !requested_.empty())
+    return false;
+  for (int l = 0; l < 4; ++l) {
+    if (output_busy_[l]) return false;
+    if ((input_busy_[l] || watching_[l]) && ports_[l] && !ports_[l]->nothing_coming()) return false;
+  }
+  // A link engine's bytes not yet charged to the CPU would be charged at the run's end.
+  std::int64_t moved = 0;
+  for (const auto& port : ports_)
+    if (port) moved += port->link().dma_bytes_including_now(port->end(), t800::sim_now());
+  return moved == dma_seen_;
+}
+
+StopReason IssNode::run_core(std::int64_t now, std::int64_t bound, std::int64_t slice_end) {
+  if (!outstanding() || bound >= slice_end || !may_run_ahead())
+    return core_.run(bound, instruction_budget());
+  ProcessorAccount& a = session_.account(node_);
+  ahead_from_.cycle = core_.cycle();
+  ahead_from_.output_busy = output_busy_;
+  ahead_from_.input_busy = input_busy_;
+  ahead_from_.watching = watching_;
+  for (int l = 0; l < 4; ++l)
+    ahead_from_.block_waiting[l] = ports_[l] && ports_[l]->link().input_pending(ports_[l]->end());
+  core_.checkpoint();
+  ahead_ = true;
+  ++a.runs_ahead;
+  const StopReason why = core_.run(slice_end, instruction_budget());
+  if (run_ahead_stands(core_.cycle())) {
+    core_.commit();
+    ahead_ = false;
+    std::vector<std::function<void()>> changes;
+    changes.swap(deferred_);
+    for (auto& change : changes) change();
+    return why;
+  }
+  ++a.runs_ahead_undone;
+  a.cycles_undone += core_.cycle() - ahead_from_.cycle;
+  undo_run_ahead();
+  return core_.run(std::max(now_cycle(), now + 1), instruction_budget());
+}
+
+// Waits for SystemC to reach the run's end; false as soon as something the core could have seen
+// came before it: a block started towards one of its links that arrives by then (its first byte
+// one data packet after the start, which is when this wakes), a link event, the session's end.
+bool IssNode::run_ahead_stands(std::int64_t end_cycle) {
+  const sc_core::sc_time end = time_of(end_cycle);
+  for (;;) {
+    if (!inbox_.empty() || session_.over() || machine_.stopping()) return false;
+    const sc_core::sc_time now = t800::sim_now();
+    for (int l = 0; l < 4; ++l) {
+      if (!ports_[l] || ahead_from_.block_waiting[l] ||
+          !ports_[l]->link().input_pending(ports_[l]->end()))
+        continue;
+      // Its start is noted by the port in this instant, perhaps after this look.
+      const sc_core::sc_time started = ports_[l]->pending_since().value_or(now);
+      if (started + ports_[l]->data_packet() <= end) return false;
+    }
+    if (now >= end) return true;
+    sc_core::sc_event_or_list woken = inbox_event_ | session_.ended_event();
+    for (const auto& port : ports_)
+      if (port) woken |= port->link().input_pending_event(port->end());
+    sc_core::wait(end - now, woken);
+  }
+}
+
+void IssNode::undo_run_ahead() {
+  core_.rollback();
+  ahead_ = false;
+  output_busy_ = ahead_from_.output_busy;
+  input_busy_ = ahead_from_.input_busy;
+  watching_ = ahead_from_.watching;
+  deferred_.clear();
+  requested_.clear();
+}
+
+void IssNode::settle() {
+  if (!ahead_) return;
+  undo_run_ahead();
+  core_.run(std::max(now_cycle(), ahead_from_.cycle + 1), instruction_budget());
+  account();
+}
+
 void IssNode::wait_until_cycle(std::int64_t cycle) {
   const sc_core::sc_time target = time_of(cycle);
   const sc_core::sc_time now = t800::sim_now();
@@ -424,12 +533,13 @@ void IssNode::execute(network::Process& p) {
       }
     }
     // Not past the run's simulated-time limit: what a stopped run reports ran before it.
-    if (const double limit_s = machine_.options().max_sim_s; limit_s > 0)
-      bound = std::min(
-          bound, std::max<std::int64_t>(now_cycle() + 1, std::int64_t(limit_s * 1e9 / cycle_ns_)));
-    std::int64_t budget = kNever / 2;
-    if (options_.max_instructions > 0) budget = options_.max_instructions - core_.instructions();
-    const StopReason why = core_.run(bound, budget);
+    std::int64_t slice_end = now + slice;
+    if (const double limit_s = machine_.options().max_sim_s; limit_s > 0) {
+      const std::int64_t limit = std::max(now + 1, std::int64_t(limit_s * 1e9 / cycle_ns_));
+      bound = std::min(bound, limit);
+      slice_end = std::min(slice_end, limit);
+    }
+    const StopReason why = run_core(now, bound, slice_end);
     ++a.synchronisations;
     machine_.heartbeat();
     charge_dma();
@@ -441,7 +551,7 @@ void IssNode::execute(network::Process& p) {
         break;
       case StopReason::running:
         // Never a wait of no time: the next cycle at the least, so simulated time advances.
-        wait_until_cycle(std::max(core_.cycle(), now_cycle() + 1));
+        wait_until_cycle(std::max(core_.cycle(), now + 1));
         break;
       case StopReason::limit:
         wait_until_cycle(core_.cycle());

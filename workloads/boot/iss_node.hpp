@@ -35,7 +35,11 @@ struct IssNodeOptions {
   t800::iss::AddressPolicy policy = t800::iss::AddressPolicy::wrap;
   std::int64_t max_instructions = 0;  // per processor; 0: no limit
   double slice_us = 1000;             // the run-ahead slice with nothing outstanding
-  bool profile = false;               // tally instructions and waits (IssNode::profile)
+  // Where only an arrival could change what the core does, run on to the slice's end from a
+  // checkpoint and go back if one comes (iss_node.cpp, "running ahead"); false: never further than
+  // the look-ahead. Only where DMA stalls are charged can differ (docs/iss.md, "Running ahead").
+  bool run_ahead = true;
+  bool profile = false;  // tally instructions and waits (IssNode::profile)
 };
 
 // What a profiled processor did (IssNodeOptions::profile): its instructions by operation and by
@@ -66,6 +70,9 @@ class IssNode : public t800::iss::LinkEngine {
   // What the processor is doing now, for a run stopped before its end: running (at which Iptr),
   // halted, or its waiting processes; and the link transfers in flight.
   std::string state() const;
+  // A run stopped (a host-time limit, an interrupt) while this core was ahead of the stop: it is
+  // brought back to the stop's instant, so that what it reports ran before the stop.
+  void settle();
 
  private:
   struct LinkEvent {
@@ -80,6 +87,13 @@ class IssNode : public t800::iss::LinkEngine {
   void deliver_link_events();
   void deliver_arrivals();
   std::optional<std::int64_t> lookahead_bound(std::int64_t now) const;
+  // Running ahead of the look-ahead (iss_node.cpp, "Running ahead").
+  bool may_run_ahead() const;
+  t800::iss::StopReason run_core(std::int64_t now, std::int64_t bound, std::int64_t slice_end);
+  bool run_ahead_stands(std::int64_t end_cycle);
+  void undo_run_ahead();
+  void defer(std::function<void()> port_change);
+  std::int64_t instruction_budget() const;
   std::int64_t cycle_of(const sc_core::sc_time& t) const;
   void start_requested_transfers();
   void charge_dma();
@@ -102,6 +116,15 @@ class IssNode : public t800::iss::LinkEngine {
   std::vector<LinkEvent> inbox_;
   sc_core::sc_event inbox_event_;
   std::vector<std::function<void()>> requested_;  // transfers to start at the core's cycle
+  // While running ahead: the ports' watches and resets the core made, done once the run stands
+  // (its end is the first instant anything could see them), forgotten if it is undone.
+  std::vector<std::function<void()>> deferred_;
+  bool ahead_ = false;  // the core is running, or has run, ahead from a checkpoint not yet settled
+  // At the checkpoint: the link flags below, and which links had a block already waiting.
+  struct AheadFrom {
+    std::int64_t cycle = 0;
+    std::array<bool, 4> output_busy{}, input_busy{}, watching{}, block_waiting{};
+  } ahead_from_;
   // Transfers and link watches under way, by link: while any is, outside events are due.
   std::array<bool, 4> output_busy_{}, input_busy_{}, watching_{};
   bool outstanding() const;

@@ -45,6 +45,8 @@ class LinkPort {
   bool input_pending(const sc_core::sc_time& at) const;
   // A sender has started a block towards this end whose first byte arrives after now: when.
   std::optional<sc_core::sc_time> ready_after_now() const;
+  // When the block now waiting at the link was started by its sender, once the port has seen it.
+  const std::optional<sc_core::sc_time>& pending_since() const { return pending_since_; }
   // Nothing is on its way to this end: no byte here, no block started. Whatever a sender starts
   // from now on is seen here one data packet later at the earliest (data_packet()).
   bool nothing_coming() const;
