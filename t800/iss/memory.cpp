@@ -13,6 +13,7 @@ Memory::Memory(std::int64_t on_chip_bytes, std::int64_t installed_bytes, Address
         "RAM and be at most 2 GiB (half the address space, from MostNeg)",
         installed_bytes, on_chip_bytes));
   size_ = std::uint32_t(installed_bytes);
+  store_limit_ = size_;
   on_chip_ = std::uint32_t(on_chip_bytes);
   power_of_two_ = (size_ & (size_ - 1)) == 0;
   bytes_.assign(size_, 0);

@@ -40,10 +40,14 @@ class Memory {
     std::memcpy(&w, &bytes_[offset(address & ~3u)], 4);
     return w;
   }
+  // Stores past store_limit_ take the slow way: outside the installed memory, or any while the undo
+  // log is on (which sets the limit to 0), so that the log costs the common store nothing.
   void set_word(Word address, Word value) {
-    const std::uint32_t o = offset(address & ~3u);
-    if (logging_) [[unlikely]]
-      log(o);
+    const std::uint32_t o = (address & ~3u) - kMostNeg;
+    if (o >= store_limit_) [[unlikely]] {
+      set_word_slowly(address, value);
+      return;
+    }
     std::memcpy(&bytes_[o], &value, 4);
     if (code_lines_[o >> kLineShift]) written_code(o);
   }
@@ -62,22 +66,22 @@ class Memory {
   }
   void set_word(Word address, Word value, bool& is_external) {
     const std::uint32_t o = address - kMostNeg;
-    if (o >= size_) [[unlikely]] {
+    if (o >= store_limit_) [[unlikely]] {
       is_external = external(address);
-      set_word(address, value);
+      set_word_slowly(address, value);
       return;
     }
     is_external = o >= on_chip_;
-    if (logging_) [[unlikely]]
-      log(o);
     std::memcpy(&bytes_[o & ~3u], &value, 4);
     if (code_lines_[o >> kLineShift]) written_code(o & ~3u);
   }
   std::uint8_t byte(Word address) const { return bytes_[offset(address)]; }
   void set_byte(Word address, std::uint8_t value) {
-    const std::uint32_t o = offset(address);
-    if (logging_) [[unlikely]]
-      log(o);
+    std::uint32_t o = address - kMostNeg;
+    if (o >= store_limit_) [[unlikely]] {
+      o = offset(address);
+      if (logging_) log(o);
+    }
     bytes_[o] = value;
     if (code_lines_[o >> kLineShift]) written_code(o);
   }
@@ -105,11 +109,13 @@ class Memory {
   void start_undo_log() {
     undo_.clear();
     logging_ = true;
+    store_limit_ = 0;
   }
   void undo();
   void drop_undo_log() {
     undo_.clear();
     logging_ = false;
+    store_limit_ = size_;
   }
 
   // The decoder marks the lines it has cached code from, and is told when one is written.
@@ -121,6 +127,12 @@ class Memory {
  private:
   std::uint32_t wrap(Word address) const;
   void written_code(std::uint32_t offset);
+  void set_word_slowly(Word address, Word value) {
+    const std::uint32_t o = offset(address & ~3u);
+    if (logging_) log(o);
+    std::memcpy(&bytes_[o], &value, 4);
+    if (code_lines_[o >> kLineShift]) written_code(o);
+  }
   // The word holding `offset` before it is written.
   void log(std::uint32_t offset) {
     const std::uint32_t o = offset & ~3u;
@@ -130,6 +142,7 @@ class Memory {
   }
 
   std::uint32_t size_, on_chip_;
+  std::uint32_t store_limit_;  // size_, or 0 while the undo log is on
   AddressPolicy policy_;
   bool power_of_two_;
   std::vector<std::uint8_t> bytes_;
