@@ -26,11 +26,11 @@ constexpr std::size_t kMaxMessage = 5000;  // network::bounded_message cuts at 4
 const std::vector<std::string> kScenes = {"pingpong", "link-stream", "dynamics-farm", "elimination",
                                           "trajectory"};
 
-// A scratch configs/ for this process: the shipped topologies, robots and calibration linked in, and
-// copies of the shipped scenes, so an input's relative paths ("../topologies/pair.toml") resolve and
-// nothing it writes lands in the repository.
+// A scratch configs/ for this process: the shipped topologies, robots and calibration linked in,
+// and copies of the shipped scenes, so an input's relative paths ("../topologies/pair.toml")
+// resolve and nothing it writes lands in the repository.
 const fs::path& sandbox() {
-  static const fs::path root = [] {
+  static const ScratchDirectory root([] {
     const fs::path dir = fs::temp_directory_path() / ("t800sim-fuzz-" + std::to_string(getpid()));
     const fs::path source = fs::path(T800SIM_SOURCE_DIR) / "configs";
     fs::create_directories(dir / "scenes");
@@ -39,17 +39,18 @@ const fs::path& sandbox() {
     for (const std::string& scene : kScenes)
       fs::copy_file(source / "scenes" / (scene + ".toml"), dir / "scenes" / (scene + ".toml"),
                     fs::copy_options::overwrite_existing);
-    fs::copy_file(source / "scenes" / "trajectory-torque.csv", dir / "scenes" / "trajectory-torque.csv",
-                  fs::copy_options::overwrite_existing);
+    fs::copy_file(source / "scenes" / "trajectory-torque.csv",
+                  dir / "scenes" / "trajectory-torque.csv", fs::copy_options::overwrite_existing);
     return dir;
-  }();
-  return root;
+  }());
+  return root.path();
 }
 
 void check_message(const std::string& text) {
   if (text.empty()) throw Finding("an error without a message");
   if (text.size() > kMaxMessage)
-    throw Finding("an error message of " + std::to_string(text.size()) + " bytes: " + text.substr(0, 200));
+    throw Finding("an error message of " + std::to_string(text.size()) +
+                  " bytes: " + text.substr(0, 200));
 }
 
 // Runs a reader; a clean refusal is a verdict, anything else is thrown on.
@@ -59,7 +60,8 @@ Verdict judge(F&& read) {
     read();
     return Verdict::accepted;
   } catch (const network::ConfigError& e) {
-    if (e.where().file.empty()) throw Finding(std::string("a configuration error naming no file: ") + e.what());
+    if (e.where().file.empty())
+      throw Finding(std::string("a configuration error naming no file: ") + e.what());
     check_message(e.what());
   } catch (const std::invalid_argument& e) {  // a CSV file's error, "path:line: why"
     check_message(e.what());

@@ -1,5 +1,7 @@
 #include "fuzz/iss_harness.hpp"
 
+#include "fuzz/harness.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -158,6 +160,7 @@ const SpSandbox& sp_sandbox() {
     fs::create_directories(b.outside);
     return b;
   }();
+  static const ScratchDirectory removed_at_exit(box.base);
   return box;
 }
 
