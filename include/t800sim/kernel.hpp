@@ -17,6 +17,7 @@
 //   p.compute(k);
 #pragma once
 
+#include <exception>
 #include <memory>
 #include <string>
 
@@ -68,9 +69,14 @@ Kernel record_kernel(const std::string& name, Body&& body) {
       name, sizeof(typename S::value_type) == sizeof(double));
   dynamics::OpTally tally;
   occam::LoopTally loops;
-  {
+  try {
     const t800::codegen::RecordingScope scope(*recording);
     body();
+  } catch (const t800::codegen::KernelError&) {
+    throw;  // names the kernel already
+  } catch (const std::exception& e) {
+    throw t800::codegen::KernelError("kernel \"" + name +
+                                     "\" failed while it was recorded: " + e.what());
   }
   return Kernel(std::move(recording), tally.counts(), loops.iterations());
 }

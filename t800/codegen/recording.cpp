@@ -1,7 +1,9 @@
 #include "t800/codegen/recording.hpp"
 
 #include <atomic>
+#include <mutex>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace t800::codegen {
 
@@ -14,6 +16,12 @@ std::uint32_t next_serial() {
   static std::atomic<std::uint32_t> serial{0};
   return ++serial;
 }
+// Every recording's name by its serial, for the error a value carried from one to another gets.
+std::mutex names_lock;
+std::unordered_map<std::uint32_t, std::string>& names() {
+  static std::unordered_map<std::uint32_t, std::string> by_serial;
+  return by_serial;
+}
 }  // namespace
 
 bool is_comparison(NodeKind kind) {
@@ -24,7 +32,26 @@ bool is_routine(NodeKind kind) {
 }
 
 Recording::Recording(std::string name, bool real64)
-    : name_(std::move(name)), real64_(real64), serial_(next_serial()) {}
+    : name_(std::move(name)), real64_(real64), serial_(next_serial()) {
+  const std::lock_guard<std::mutex> hold(names_lock);
+  names()[serial_] = name_;
+}
+
+std::string Recording::name_of(std::uint32_t serial) {
+  const std::lock_guard<std::mutex> hold(names_lock);
+  const auto at = names().find(serial);
+  return at == names().end() ? std::string() : at->second;
+}
+
+void Recording::foreign_value(std::uint32_t serial, const std::string& type,
+                              const std::string& array) const {
+  const std::string other = name_of(serial);
+  throw KernelError(
+      "kernel \"" + name_ + "\" " + (array.empty() ? "reads" : "stores into " + array) + " a " +
+      type + " value of kernel \"" + (other.empty() ? "?" : other) +
+      "\"'s recording, which its code cannot load; declare it in this kernel (t800sim::declare, "
+      "declare_variable) as data the PROC is given, or compute it here");
+}
 
 Recording* Recording::current() {
   return active();

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,12 @@ struct Event {
   int block = 0;  // the block it happened in
 };
 
+// A kernel recorded wrongly (Recording::foreign_value), or whose body threw
+// (t800sim::record_kernel): the message names the kernel.
+struct KernelError : std::logic_error {
+  using std::logic_error::logic_error;
+};
+
 // A recorded kernel: plain data, kept and compiled for each processor type that runs it.
 class Recording {
  public:
@@ -102,6 +109,13 @@ class Recording {
   // Unique among the recordings of this run: a value carries it with its node, so that a value
   // from another recording is not mistaken for one of this one's.
   std::uint32_t serial() const { return serial_; }
+  // A value of `type` (the recording scalar's C++ type) that recording `serial` made is read or
+  // stored (into `array`, if one) here: the compiled code could only take it for a constant, so it
+  // is an error naming both kernels (KernelError).
+  [[noreturn]] void foreign_value(std::uint32_t serial, const std::string& type,
+                                  const std::string& array = {}) const;
+  // The name of the kernel recording `serial` made (empty if none did).
+  static std::string name_of(std::uint32_t serial);
 
   // ---- Declarations (by kernels and their callers) ----
   int declare_array(std::string name, std::int64_t length,

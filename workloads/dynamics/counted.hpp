@@ -65,6 +65,8 @@ class Counted {
     v_ = o.v_;
     Recording* r = Recording::current();
     if (r && home_ >= 0 && serial_ == r->serial()) {
+      if (o.foreign_to(*r)) [[unlikely]]
+        r->foreign_value(o.serial_, type_name(), r->arrays()[r->accesses()[home_].array].name);
       r->store(home_, node >= 0 ? node : r->constant(double(v_)));
       node_ = -1;  // read again, it is loaded from the element
     } else {
@@ -147,7 +149,15 @@ class Counted {
     if (node_ >= 0) return node_;
     return home_ >= 0 ? r->load(home_) : -1;
   }
+  // Made in another recording (a literal or a value from no recording is a constant of this one).
+  bool foreign_to(const Recording& r) const { return serial_ != 0 && serial_ != r.serial(); }
+  static const char* type_name() {
+    return sizeof(T) == sizeof(double) ? "t800sim::Real64 (dynamics::Counted<double>)"
+                                       : "t800sim::Real32 (dynamics::Counted<float>)";
+  }
   static int operand(Recording& r, const Counted& x) {
+    if (x.foreign_to(r)) [[unlikely]]
+      r.foreign_value(x.serial_, type_name());
     return (x.node_ >= 0 && x.serial_ == r.serial()) ? x.node_ : r.constant(double(x.v_));
   }
   static Counted record(T result, NodeKind kind, const Counted& a, const Counted& b) {
@@ -173,8 +183,8 @@ class Counted {
   }
 
   T v_ = 0;
-  int node_ = -1;           // the recorded node holding the value
-  int home_ = -1;           // a declared array element (recorded access)
+  int node_ = -1;             // the recorded node holding the value
+  int home_ = -1;             // a declared array element (recorded access)
   std::uint32_t serial_ = 0;  // the recording node_ and home_ belong to
 };
 
