@@ -8,10 +8,6 @@
 namespace t800::codegen {
 
 namespace {
-Recording*& active() {
-  thread_local Recording* recording = nullptr;
-  return recording;
-}
 std::uint32_t next_serial() {
   static std::atomic<std::uint32_t> serial{0};
   return ++serial;
@@ -45,24 +41,22 @@ std::string Recording::name_of(std::uint32_t serial) {
 
 void Recording::foreign_value(std::uint32_t serial, const std::string& type,
                               const std::string& array) const {
-  const std::string other = name_of(serial);
-  throw KernelError(
-      "kernel \"" + name_ + "\" " + (array.empty() ? "reads" : "stores into " + array) + " a " +
-      type + " value of kernel \"" + (other.empty() ? "?" : other) +
-      "\"'s recording, which its code cannot load; declare it in this kernel (t800sim::declare, "
-      "declare_variable) as data the PROC is given, or compute it here");
+  const std::string whose =
+      serial == kOutside
+          ? " value made before the kernel was recorded (neither declared nor computed in it)"
+          : " value of kernel \"" + name_of(serial) + "\"'s recording";
+  throw KernelError("kernel \"" + name_ + "\" " +
+                    (array.empty() ? "reads" : "stores into " + array) + " a " + type + whose +
+                    ", which its code cannot load; declare it in this kernel (t800sim::declare, "
+                    "declare_variable) as data the PROC is given, or compute it here");
 }
 
-Recording* Recording::current() {
-  return active();
-}
-
-RecordingScope::RecordingScope(Recording& recording) : outer_(active()) {
-  active() = &recording;
+RecordingScope::RecordingScope(Recording& recording) : outer_(Recording::active()) {
+  Recording::active() = &recording;
 }
 
 RecordingScope::~RecordingScope() {
-  active() = outer_;
+  Recording::active() = outer_;
 }
 
 int Recording::declare_array(std::string name, std::int64_t length, ArrayStorage storage) {

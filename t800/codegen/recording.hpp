@@ -101,17 +101,20 @@ class Recording {
  public:
   Recording(std::string name, bool real64);
 
-  // The recording receiving operations on this thread (RecordingScope), or nullptr.
-  static Recording* current();
+  // The recording receiving operations on this thread (RecordingScope), or nullptr. Inline: every
+  // recording scalar made asks.
+  static Recording* current() { return active(); }
+  // The serial of no recording: a value made while none was active.
+  static constexpr std::uint32_t kOutside = 0;
 
   const std::string& name() const { return name_; }
   bool real64() const { return real64_; }
   // Unique among the recordings of this run: a value carries it with its node, so that a value
   // from another recording is not mistaken for one of this one's.
   std::uint32_t serial() const { return serial_; }
-  // A value of `type` (the recording scalar's C++ type) that recording `serial` made is read or
-  // stored (into `array`, if one) here: the compiled code could only take it for a constant, so it
-  // is an error naming both kernels (KernelError).
+  // A value of `type` (the recording scalar's C++ type) that recording `serial` made, or no
+  // recording (kOutside), is read or stored (into `array`, if one) here: the compiled code could
+  // only take it for a constant, so it is an error naming the kernels (KernelError).
   [[noreturn]] void foreign_value(std::uint32_t serial, const std::string& type,
                                   const std::string& array = {}) const;
   // The name of the kernel recording `serial` made (empty if none did).
@@ -142,6 +145,11 @@ class Recording {
   int blocks() const { return next_block_; }
 
  private:
+  friend class RecordingScope;
+  static Recording*& active() {
+    thread_local Recording* recording = nullptr;
+    return recording;
+  }
   int add_node(Node node);
   void add_event(Event e);
   int block() const;

@@ -1,8 +1,8 @@
 // A kernel's code can load what the kernel declares, compute what it computes, and hold constants;
-// a value made in another kernel's recording is none of these, so reading it or storing it there
-// is an error naming both kernels, the value's C++ type and the array stored into, never a silent
-// constant (issue 25, item 3). A body that throws is reported with its kernel's name and the
-// exception's message.
+// a value made in another kernel's recording, or before any, is none of these, so reading it or
+// storing it there is an error naming the kernels, the value's C++ type and the array stored into,
+// never a silent constant (issue 25, item 3). A body that throws is reported with its kernel's name
+// and the exception's message.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -65,6 +65,26 @@ TEST(KernelErrors, AValueOfAnotherKernelStoredNamesTheArray) {
   EXPECT_NE(message.find("kernel \"storer\" stores into out"), std::string::npos) << message;
   EXPECT_NE(message.find("kernel \"producer32\""), std::string::npos) << message;
   EXPECT_NE(message.find("Real32"), std::string::npos) << message;
+}
+
+TEST(KernelErrors, AValueMadeBeforeTheKernelIsAnErrorUntilDeclared) {
+  std::vector<Real64> x(4, Real64(1.0));  // made before any recording
+  const std::string message = kernel_error_of([&] {
+    t800sim::record_kernel<Real64>("undeclared", [&] {
+      Real64 s = 0.0;
+      t800sim::declare_variable(s, "s");
+      s = s + x[2];
+    });
+  });
+  EXPECT_NE(message.find("kernel \"undeclared\" reads"), std::string::npos) << message;
+  EXPECT_NE(message.find("made before the kernel was recorded"), std::string::npos) << message;
+  // Declared, the same array is data the PROC is given.
+  EXPECT_NO_THROW(t800sim::record_kernel<Real64>("declared", [&] {
+    t800sim::declare(x, "x");
+    Real64 s = 0.0;
+    t800sim::declare_variable(s, "s");
+    s = s + x[2];
+  }));
 }
 
 TEST(KernelErrors, ItsOwnValuesAndConstantsAreNoError) {

@@ -53,10 +53,12 @@ class Counted {
  public:
   using value_type = T;
 
-  Counted() = default;
+  // Made while a recording is active, a value is that recording's (a constant of its code until
+  // computed); made with none, it belongs to none, and a recording that reads it is told so.
+  Counted() : serial_(current_serial()) {}
   // Implicit from T: literals and constants enter expressions without cost (their loads are counted
   // explicitly by the kernels, see op_counts.hpp; a recording makes them constants of the code).
-  Counted(T v) : v_(v) {}  // NOLINT(google-explicit-constructor)
+  Counted(T v) : v_(v), serial_(current_serial()) {}  // NOLINT(google-explicit-constructor)
   // A copy is a value: reading a declared array element, it is a load of that element.
   Counted(const Counted& o) : v_(o.v_), node_(o.value_node()), serial_(o.serial_) {}
   // Assigning to a declared array element is a store into it (recorded); otherwise a copy.
@@ -83,7 +85,7 @@ class Counted {
   void bind(int access) {
     home_ = access;
     node_ = -1;
-    serial_ = Recording::current() ? Recording::current()->serial() : 0;
+    serial_ = current_serial();
   }
 
   friend Counted operator+(Counted a, Counted b) {
@@ -149,8 +151,13 @@ class Counted {
     if (node_ >= 0) return node_;
     return home_ >= 0 ? r->load(home_) : -1;
   }
-  // Made in another recording (a literal or a value from no recording is a constant of this one).
-  bool foreign_to(const Recording& r) const { return serial_ != 0 && serial_ != r.serial(); }
+  // Made outside this recording: in another, or before any (kOutside). A literal or a plain T
+  // converted inside is this recording's constant.
+  bool foreign_to(const Recording& r) const { return serial_ != r.serial(); }
+  static std::uint32_t current_serial() {
+    Recording* r = Recording::current();
+    return r ? r->serial() : Recording::kOutside;
+  }
   static const char* type_name() {
     return sizeof(T) == sizeof(double) ? "t800sim::Real64 (dynamics::Counted<double>)"
                                        : "t800sim::Real32 (dynamics::Counted<float>)";
@@ -183,9 +190,9 @@ class Counted {
   }
 
   T v_ = 0;
-  int node_ = -1;             // the recorded node holding the value
-  int home_ = -1;             // a declared array element (recorded access)
-  std::uint32_t serial_ = 0;  // the recording node_ and home_ belong to
+  int node_ = -1;                               // the recorded node holding the value
+  int home_ = -1;                               // a declared array element (recorded access)
+  std::uint32_t serial_ = Recording::kOutside;  // the recording node_, home_ and the value are of
 };
 
 template <class T>
