@@ -13,6 +13,8 @@
 // (what a neighbour starts from now on arrives no sooner). With nothing outstanding nothing
 // outside can change what it does, and it runs ahead in slices of simulated time that only let
 // SystemC's clock keep up.
+// In the last case but one it may instead run a whole slice ahead from a checkpoint, and go back
+// if a block starts towards it meanwhile (iss_node.cpp, "running ahead").
 #pragma once
 
 #include <array>
