@@ -45,7 +45,7 @@ void Memory::copy(Word to, Word from, Word count) {
     return;
   }
   if (count == 0) return;
-  if (logging_)
+  if (logging())
     for (std::uint32_t o = target & ~3u; o < target + count; o += 4) log(o);
   std::memmove(&bytes_[target], &bytes_[source], count);
   for (std::uint32_t line = target >> kLineShift; line <= (target + count - 1) >> kLineShift;

@@ -80,7 +80,7 @@ class Memory {
     std::uint32_t o = address - kMostNeg;
     if (o >= store_limit_) [[unlikely]] {
       o = offset(address);
-      if (logging_) log(o);
+      if (logging()) log(o);
     }
     bytes_[o] = value;
     if (code_lines_[o >> kLineShift]) written_code(o);
@@ -108,13 +108,11 @@ class Memory {
   // drop_undo_log() (the run stands).
   void start_undo_log() {
     undo_.clear();
-    logging_ = true;
     store_limit_ = 0;
   }
   void undo();
   void drop_undo_log() {
     undo_.clear();
-    logging_ = false;
     store_limit_ = size_;
   }
 
@@ -129,7 +127,7 @@ class Memory {
   void written_code(std::uint32_t offset);
   void set_word_slowly(Word address, Word value) {
     const std::uint32_t o = offset(address & ~3u);
-    if (logging_) log(o);
+    if (logging()) log(o);
     std::memcpy(&bytes_[o], &value, 4);
     if (code_lines_[o >> kLineShift]) written_code(o);
   }
@@ -142,7 +140,8 @@ class Memory {
   }
 
   std::uint32_t size_, on_chip_;
-  std::uint32_t store_limit_;  // size_, or 0 while the undo log is on
+  std::uint32_t store_limit_;  // size_, or 0 while the undo log is on (size_ is never 0)
+  bool logging() const { return store_limit_ == 0; }
   AddressPolicy policy_;
   bool power_of_two_;
   std::vector<std::uint8_t> bytes_;
@@ -153,7 +152,6 @@ class Memory {
     Word old;
   };
   std::vector<Overwritten> undo_;
-  bool logging_ = false;
 };
 
 }  // namespace t800::iss

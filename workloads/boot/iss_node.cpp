@@ -377,10 +377,15 @@ void IssNode::start_requested_transfers() {
 
 // Each byte a link engine moves takes a memory cycle from the CPU (docs/t800-timing.md 6): the
 // bytes moved at this processor's ends since the last look delay the core by that many.
-void IssNode::charge_dma() {
+std::int64_t IssNode::dma_moved() const {
   std::int64_t moved = 0;
   for (const auto& port : ports_)
     if (port) moved += port->link().dma_bytes_including_now(port->end(), t800::sim_now());
+  return moved;
+}
+
+void IssNode::charge_dma() {
+  const std::int64_t moved = dma_moved();
   const std::int64_t fresh = moved - dma_seen_;
   dma_seen_ = moved;
   if (fresh <= 0 || core_.idle()) return;
@@ -409,9 +414,10 @@ std::int64_t IssNode::instruction_budget() const {
 // that state only an arrival can change what the core does, and the core shows nothing of its own
 // before it stops for a transfer it starts. So it runs on from a checkpoint to the end of the
 // slice (or to that stop), and SystemC is left to catch up: if nothing has started towards any of
-// its links by the run's end, and nothing else was delivered, the run stands, exactly as the
-// packet-by-packet one would have gone; if something has, the core goes back to the checkpoint
-// and runs again only to the instant it was found out, and on by the look-ahead from there.
+// its links by the run's end, and nothing else was delivered, the run stands, as the
+// packet-by-packet one would have gone (but for where later DMA stalls fall, which depends on
+// where cores synchronise: docs/iss.md, "Running ahead"); if something has, the core goes back to
+// the checkpoint and runs again only to the instant it was found out, and on by the look-ahead.
 
 bool IssNode::may_run_ahead() const {
   if (!options_.run_ahead || options_.profile || core_.idle() || !inbox_.empty() ||
@@ -422,10 +428,7 @@ bool IssNode::may_run_ahead() const {
     if ((input_busy_[l] || watching_[l]) && ports_[l] && !ports_[l]->nothing_coming()) return false;
   }
   // A link engine's bytes not yet charged to the CPU would be charged at the run's end.
-  std::int64_t moved = 0;
-  for (const auto& port : ports_)
-    if (port) moved += port->link().dma_bytes_including_now(port->end(), t800::sim_now());
-  return moved == dma_seen_;
+  return dma_moved() == dma_seen_;
 }
 
 StopReason IssNode::run_core(std::int64_t now, std::int64_t bound, std::int64_t slice_end) {

@@ -99,6 +99,7 @@ class IssNode : public t800::iss::LinkEngine {
   std::int64_t cycle_of(const sc_core::sc_time& t) const;
   void start_requested_transfers();
   void charge_dma();
+  std::int64_t dma_moved() const;  // bytes the link engines have moved at this processor's ends
   void account();
   void wait_until_cycle(std::int64_t cycle);
   void wait_for_link_or(const sc_core::sc_time* timeout);
