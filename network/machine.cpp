@@ -249,7 +249,7 @@ void Machine::place_memory() {
       for (const t800::codegen::ArrayDecl& a : unit.arrays)
         if (a.storage == t800::codegen::ArrayStorage::pointer) {
           int& bytes = array_bytes[d.process + "/" + a.name];
-          bytes = std::max(bytes, int(a.length) * (unit.real64 ? 8 : 4));
+          bytes = std::max(bytes, int(a.length) * t800::codegen::element_bytes(a, unit.real64));
         }
     }
     for (const auto& [name, bytes] : array_bytes) demand.data_bytes += bytes;

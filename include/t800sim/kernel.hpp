@@ -30,6 +30,14 @@ namespace t800sim {
 
 using Real32 = dynamics::Counted<float>;   // occam REAL32
 using Real64 = dynamics::Counted<double>;  // occam REAL64
+// occam INT (32 bits on the T800): its arithmetic, comparisons, shifts and bitwise operations are
+// recorded and compiled as REAL32's and REAL64's are; arrays of Int are declared the same way.
+using Int = dynamics::CountedInt;
+// REALn ROUND n, INT ROUND x, INT TRUNC x:
+//   Real64 x = t800sim::to_real<Real64>(n);  Int k = t800sim::int_round(x);
+using dynamics::int_round;
+using dynamics::int_trunc;
+using dynamics::to_real;
 
 using occam::declare;
 using occam::declare_each;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "t800/codegen/generator.hpp"
+#include "t800/codegen/integer_expression.hpp"
 #include "t800/codegen/runtime_library.hpp"
 
 namespace t800::codegen {
@@ -67,81 +68,16 @@ struct ExpressionEmitter::Plan {
   int need = 1;
 };
 
-ExpressionEmitter::ExpressionEmitter(const Recording& recording, EmitSink& sink, Frame& frame)
+ExpressionEmitter::ExpressionEmitter(const Recording& recording, EmitSink& sink, Frame& frame,
+                                     Dataflow& flow)
     : r_(recording),
       sink_(sink),
       frame_(frame),
+      flow_(flow),
       real64_(recording.real64()),
       words_(recording.real64() ? 2 : 1) {
-  const std::size_t n = r_.nodes().size();
-  live_.assign(n, false);
-  temporary_.assign(n, false);
-  uses_.assign(n, 0);
-  last_use_.assign(n, -1);
-  slot_.assign(n, -1);
-  need_.assign(n, -1);
-  sign_.assign(n, -1);
-  analyse();
-}
-
-// Which nodes are live (reach a store or a test), how often and from which blocks they are
-// used, hence which are local variables, and the last statement that reads each of those.
-void ExpressionEmitter::analyse() {
-  const std::vector<Node>& nodes = r_.nodes();
-  std::vector<bool> cross(nodes.size(), false);
-  std::vector<int> stack;
-  auto use = [&](int n, int block) {
-    n = through(n);  // a sign change is folded into its consumer: its operand is what is used
-    ++uses_[std::size_t(n)];
-    if (nodes[std::size_t(n)].block != block) cross[std::size_t(n)] = true;
-    if (!live_[std::size_t(n)]) {
-      live_[std::size_t(n)] = true;
-      stack.push_back(n);
-    }
-  };
-  for (const Event& e : r_.events())
-    if (e.kind == EventKind::store || e.kind == EventKind::test) use(e.node, e.block);
-  while (!stack.empty()) {
-    const Node& node = nodes[std::size_t(stack.back())];
-    stack.pop_back();
-    if (node.a >= 0) use(node.a, node.block);
-    if (node.b >= 0 && through(node.b) != through(node.a))  // x * x reads x once
-      use(node.b, node.block);
-  }
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    const NodeKind k = nodes[i].kind;
-    temporary_[i] = live_[i] && !leaf_kind(k) && !is_comparison(k) && k != NodeKind::neg &&
-                    (uses_[i] > 1 || cross[i] || is_routine(k));
-    if (live_[i] && k == NodeKind::constant && nodes[i].value != 0.0) uses_constants_ = true;
-  }
-  // The last statement reading each temporary: walk every statement's expression down to the
-  // temporaries (or leaves) it reads.
-  for (std::size_t i = 0; i < r_.events().size(); ++i) {
-    const Event& e = r_.events()[i];
-    int root = -1, defining = -1;
-    if (e.kind == EventKind::store || e.kind == EventKind::test) root = e.node;
-    if (e.kind == EventKind::value && temporary(e.node)) root = defining = e.node;
-    if (root < 0) continue;
-    std::vector<int> walk;
-    auto visit = [&](int n) {
-      if (n < 0) return;
-      n = through(n);
-      if (temporary(n) && n != defining) {
-        last_use_[std::size_t(n)] = int(i);
-        return;
-      }
-      walk.push_back(n);
-    };
-    visit(root);
-    while (!walk.empty()) {
-      const Node& node = nodes[std::size_t(walk.back())];
-      walk.pop_back();
-      visit(node.a);
-      if (node.b != node.a) visit(node.b);
-    }
-  }
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    if (temporary_[i] && last_use_[i] >= 0) release_at_.insert({last_use_[i], int(i)});
+  need_.assign(r_.nodes().size(), -1);
+  sign_.assign(r_.nodes().size(), -1);
 }
 
 // The same value: one node, or two reads of one element in one place (a variable read twice).
@@ -155,12 +91,6 @@ bool ExpressionEmitter::same_value(int a, int b) const {
   const Access& p = r_.accesses()[std::size_t(x.access)];
   const Access& q = r_.accesses()[std::size_t(y.access)];
   return p.array == q.array && p.index == q.index;
-}
-
-int ExpressionEmitter::through(int n) const {
-  while (n >= 0 && r_.nodes()[std::size_t(n)].kind == NodeKind::neg)
-    n = r_.nodes()[std::size_t(n)].a;
-  return n;
 }
 
 bool ExpressionEmitter::memory_operand(int n) const {
@@ -278,6 +208,8 @@ int ExpressionEmitter::need_expanded(int n) {
     case NodeKind::neg:
     case NodeKind::abs:
       return need(node.a);
+    case NodeKind::to_real:
+      return 1;  // a load (fpi32tor32/fpi32tor64 push the converted value)
     case NodeKind::sqrt:
       return sign(node.a) ? std::min(kStackDepth, need(node.a) + 1) : need(node.a);
     default:
@@ -320,7 +252,7 @@ void ExpressionEmitter::leaf_address(int n) {
   const Node& node = r_.nodes()[std::size_t(n)];
   const std::string what = describe(n);
   if (temporary(n)) {
-    sink_.emit({Op::ldlp, slot_[std::size_t(n)], 0, false, {}, what});
+    sink_.emit({Op::ldlp, flow_.slot(n), 0, false, {}, what});
     return;
   }
   if (node.kind == NodeKind::load) {
@@ -387,6 +319,9 @@ bool ExpressionEmitter::expand(int n) {
     case NodeKind::abs:
       value(node.a);
       operation(Op::fpuabs, "ABS");
+      return false;
+    case NodeKind::to_real:
+      from_integer(n);
       return false;
     case NodeKind::sqrt: {
       true_value(node.a);
@@ -528,9 +463,20 @@ void ExpressionEmitter::store_fp(MemoryRef where, const std::string& note) {
 }
 
 void ExpressionEmitter::release_after(int event) {
-  auto [begin, end] = release_at_.equal_range(event);
-  for (auto it = begin; it != end; ++it)
-    frame_.release_temporary(slot_[std::size_t(it->second)], words_);
+  flow_.release_after(event, frame_);
+}
+
+// REALn ROUND a loads the INT from memory: its workspace word, its element, or a word it is
+// computed into here.
+void ExpressionEmitter::from_integer(int n) {
+  const int scratch = integers_->push_address(r_.nodes()[std::size_t(n)].a);
+  Instruction in;
+  in.op = real64_ ? Op::fpi32tor64 : Op::fpi32tor32;
+  in.data = integers_->memory_of(r_.nodes()[std::size_t(n)].a);
+  in.note = std::string(real64_ ? "REAL64" : "REAL32") + " ROUND " +
+            integers_->describe(r_.nodes()[std::size_t(n)].a);
+  sink_.emit(in);
+  if (scratch >= 0) frame_.release_temporary(scratch);
 }
 
 void ExpressionEmitter::define(int n, int event) {
@@ -538,7 +484,7 @@ void ExpressionEmitter::define(int n, int event) {
   if (!sink_.target().fpu) {
     const int value = soft_compute(n);
     release_after(event);
-    slot_[std::size_t(n)] = value;
+    flow_.adopt(n, value);
     return;
   }
   const Node& node = r_.nodes()[std::size_t(n)];
@@ -562,8 +508,8 @@ void ExpressionEmitter::define(int n, int event) {
     expand(n);
   }
   release_after(event);
-  slot_[std::size_t(n)] = frame_.allocate_temporary(words_);
-  sink_.emit({Op::ldlp, slot_[std::size_t(n)], 0, false, {}, name + " :="});
+  flow_.assign(n, frame_);
+  sink_.emit({Op::ldlp, flow_.slot(n), 0, false, {}, name + " :="});
   store_fp({Region::workspace, -1}, name + " :=");
 }
 
@@ -627,7 +573,7 @@ void ExpressionEmitter::soft_push(int n, int slot) {
   }
   const Node& node = r_.nodes()[std::size_t(n)];
   if (temporary(n)) {
-    soft_push(n, slot_[std::size_t(n)]);
+    soft_push(n, flow_.slot(n));
     return;
   }
   if (node.kind == NodeKind::constant && node.value == 0.0 && !real64_) {

@@ -10,12 +10,14 @@
 #include <vector>
 
 #include "t800/codegen/code_unit.hpp"
+#include "t800/codegen/dataflow.hpp"
 #include "t800/codegen/frame.hpp"
 #include "t800/codegen/recording.hpp"
 
 namespace t800::codegen {
 
 struct Target;
+class IntegerEmitter;
 
 // Where the emitter's instructions go, and what it needs from the code around it.
 class EmitSink {
@@ -26,6 +28,11 @@ class EmitSink {
   virtual void call(const CodeUnit& routine) = 0;
   // The address of a recorded array element on the integer stack.
   virtual void address(int access) = 0;
+  // Registers an element's address takes on the integer stack (1 for a constant subscript, 2 for
+  // a computed one), and an INT element loaded to, or stored from, A.
+  virtual int address_need(int access) const = 0;
+  virtual void load_word(int access) = 0;
+  virtual void store_word(int access) = 0;
   // "u[k+3]": the element as the code subscripts it, for listings.
   virtual std::string element(int access) const = 0;
   virtual const Target& target() const = 0;
@@ -33,7 +40,9 @@ class EmitSink {
 
 class ExpressionEmitter {
  public:
-  ExpressionEmitter(const Recording& recording, EmitSink& sink, Frame& frame);
+  ExpressionEmitter(const Recording& recording, EmitSink& sink, Frame& frame, Dataflow& flow);
+  // The INT expressions a REAL one converts (REALn ROUND n) are the integer emitter's.
+  void connect(IntegerEmitter& integers) { integers_ = &integers; }
 
   // At node's value event: a local variable's assignment, when the node is one.
   void define(int node, int event);
@@ -42,15 +51,18 @@ class ExpressionEmitter {
   // IF on a comparison; `outcome` is its value.
   void test(int comparison, bool outcome, int event);
 
+  // n's value on the FP stack, negated where its sign says so (INT ROUND x's x).
+  void true_value(int n);
+
   int constant_bytes() const;
   std::vector<double> constant_table() const;  // the values, by their place in the table
-  bool uses_constants() const { return uses_constants_; }
+  bool uses_constants() const { return flow_.uses_real_constants(); }
 
  private:
   struct Plan;  // how a binary operation is evaluated
-  bool temporary(int n) const { return temporary_[std::size_t(n)]; }
+  bool temporary(int n) const { return flow_.temporary(n); }
   bool memory_operand(int n) const;
-  int through(int n) const;  // n without the sign changes around it
+  int through(int n) const { return flow_.through(n); }
   bool same_value(int a, int b) const;
   int need(int n);
   int need_expanded(int n);
@@ -58,9 +70,9 @@ class ExpressionEmitter {
   bool sign_expanded(int n);
   Plan plan(int n);
 
-  bool value(int n);       // leaves n's magnitude on the FP stack, returns its sign
-  bool expand(int n);      // the same, computing n (not its temporary)
-  void true_value(int n);  // n itself, negated where its sign says so
+  bool value(int n);         // leaves n's magnitude on the FP stack, returns its sign
+  bool expand(int n);        // the same, computing n (not its temporary)
+  void from_integer(int n);  // REALn ROUND a: a's address, fpi32tor32/fpi32tor64
   void binary(int n);
   void leaf_address(int n);  // the address of a memory operand, for fpldnl* forms
   void load(int n);
@@ -73,22 +85,18 @@ class ExpressionEmitter {
   int soft_compute(int n);
   void soft_call(NodeKind kind, int a, int b, int result);
   void soft_store(int n, int access);
-  void analyse();
   std::string describe(int n) const;
 
   const Recording& r_;
   EmitSink& sink_;
   Frame& frame_;
+  Dataflow& flow_;
+  IntegerEmitter* integers_ = nullptr;
   bool real64_;
-  int words_;  // of a REAL
-  std::vector<bool> live_, temporary_;
-  std::vector<int> uses_, last_use_;
-  std::vector<int> slot_;               // a temporary's workspace word, while it lives
-  std::vector<int> need_;               // -1 = not worked out yet
-  std::vector<signed char> sign_;       // -1 = not worked out yet
-  std::multimap<int, int> release_at_;  // event -> temporaries whose last use it is
-  std::map<double, int> constants_;     // value -> word offset in the constant table
-  bool uses_constants_ = false;
+  int words_;                        // of a REAL
+  std::vector<int> need_;            // -1 = not worked out yet
+  std::vector<signed char> sign_;    // -1 = not worked out yet
+  std::map<double, int> constants_;  // value -> word offset in the constant table
 };
 
 }  // namespace t800::codegen

@@ -11,10 +11,11 @@ Frame::Frame(const Recording& recording) {
     if (e.kind == EventKind::loop_end) --depth;
   }
   int next = 2 * loop_depth_ + 2;  // control blocks, integer variable, constant table pointer
-  const int words = recording.real64() ? 2 : 1;
   for (const ArrayDecl& a : recording.arrays()) {
     array_base_.push_back(next);
-    next += a.storage == ArrayStorage::workspace ? int(a.length) * words : 1;
+    next += a.storage == ArrayStorage::workspace
+                ? int(a.length) * element_words(a, recording.real64())
+                : 1;
   }
   fixed_ = next;
 }

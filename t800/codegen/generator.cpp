@@ -7,6 +7,7 @@
 
 #include "t800/codegen/expression.hpp"
 #include "t800/codegen/frame.hpp"
+#include "t800/codegen/integer_expression.hpp"
 #include "t800/codegen/runtime_library.hpp"
 #include "t800/codegen/subscripts.hpp"
 
@@ -105,7 +106,11 @@ class Generator : public EmitSink {
         subscripts_(classify_subscripts(r)),
         shapes_(loop_shapes(r)),
         frame_(r),
-        expressions_(r, *this, frame_) {}
+        flow_(r),
+        expressions_(r, *this, frame_, flow_),
+        integers_(r, *this, frame_, flow_, expressions_) {
+    expressions_.connect(integers_);
+  }
 
   CodeUnit run() {
     bodies_.push_back(Body{});
@@ -159,7 +164,7 @@ class Generator : public EmitSink {
     const ArrayDecl& array = r_.arrays()[std::size_t(a.array)];
     const Subscript& s = subscripts_[std::size_t(access)];
     const std::string element = this->element(access);
-    const int words = r_.real64() ? 2 : 1;
+    const int words = element_words(array, r_.real64());
     if (s.by_loop) {
       emit({Op::ldl, frame_.loop_index(s.depth), 0, false, workspace(), index_name(s.depth)});
       if (s.offset != 0) emit({Op::adc, s.offset, 0, false, {}, element});
@@ -168,12 +173,21 @@ class Generator : public EmitSink {
         emit({Op::csub0, 0, 0, false, {}, "range check"});
       }
       base(a.array, element);
-      emit({r_.real64() ? Op::wsubdb : Op::wsub, 0, 0, false, {}, element});
+      emit({words == 2 ? Op::wsubdb : Op::wsub, 0, 0, false, {}, element});
       return;
     }
     base(a.array, element);
     if (s.offset != 0) emit({Op::ldnlp, s.offset * words, 0, false, {}, element});
   }
+
+  int address_need(int access) const override {
+    return subscripts_[std::size_t(access)].by_loop ? 2 : 1;
+  }
+
+  // An INT element: a workspace variable by ldl/stl, an element with a constant subscript by
+  // ldnl/stnl from its array's pointer, one with a computed subscript through its address.
+  void load_word(int access) override { word(access, false); }
+  void store_word(int access) override { word(access, true); }
 
   const Target& target() const override { return target_; }
 
@@ -229,6 +243,28 @@ class Generator : public EmitSink {
     emit({Op::ret, 0, 0, false, workspace(), "return"});
   }
 
+  void word(int access, bool store) {
+    const Access& a = r_.accesses()[std::size_t(access)];
+    const ArrayDecl& array = r_.arrays()[std::size_t(a.array)];
+    const Subscript& s = subscripts_[std::size_t(access)];
+    const std::string what = element(access) + (store ? " :=" : "");
+    const MemoryRef data =
+        array.storage == ArrayStorage::workspace ? workspace() : MemoryRef{Region::array, a.array};
+    if (!s.by_loop && array.storage == ArrayStorage::workspace) {
+      emit(
+          {store ? Op::stl : Op::ldl, frame_.array_base(a.array) + s.offset, 0, false, data, what});
+      return;
+    }
+    std::int64_t offset = 0;
+    if (s.by_loop) {
+      address(access);
+    } else {
+      base(a.array, what);
+      offset = s.offset;
+    }
+    emit({store ? Op::stnl : Op::ldnl, offset, 0, false, data, what});
+  }
+
   void base(int array, const std::string& element) {
     const ArrayDecl& d = r_.arrays()[std::size_t(array)];
     if (d.storage == ArrayStorage::workspace)
@@ -250,13 +286,22 @@ class Generator : public EmitSink {
     const Event& e = r_.events()[i];
     switch (e.kind) {
       case EventKind::value:
-        expressions_.define(e.node, int(i));
+        if (is_int(e.node))
+          integers_.define(e.node, int(i));
+        else
+          expressions_.define(e.node, int(i));
         break;
       case EventKind::store:
-        expressions_.store(e.node, e.access, int(i));
+        if (is_int(e.node))
+          integers_.store(e.node, e.access, int(i));
+        else
+          expressions_.store(e.node, e.access, int(i));
         break;
       case EventKind::test:
-        expressions_.test(e.node, e.taken, int(i));
+        if (is_int(e.node))
+          integers_.test(e.node, e.taken, int(i));
+        else
+          expressions_.test(e.node, e.taken, int(i));
         break;
       case EventKind::integer:
         for (std::int64_t k = 0; k < e.count; ++k) integer(e.integer);
@@ -272,6 +317,8 @@ class Generator : public EmitSink {
         break;
     }
   }
+
+  bool is_int(int node) const { return r_.nodes()[std::size_t(node)].integer; }
 
   // The integer statements' code (compiler writer's guide): an IF on a flag loads it and jumps on
   // false; an assignment loads and stores; the FPU's error flag is tested and jumped on.
@@ -387,7 +434,9 @@ class Generator : public EmitSink {
   std::vector<Subscript> subscripts_;
   std::map<std::size_t, LoopShape> shapes_;
   Frame frame_;
+  Dataflow flow_;
   ExpressionEmitter expressions_;
+  IntegerEmitter integers_;
   std::vector<Body> bodies_;
   std::vector<OpenLoop> loops_;
   std::vector<bool> started_iteration_;

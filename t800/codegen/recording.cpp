@@ -26,6 +26,13 @@ bool is_comparison(NodeKind kind) {
 bool is_routine(NodeKind kind) {
   return kind == NodeKind::sine || kind == NodeKind::cosine;
 }
+bool is_conversion_to_int(NodeKind kind) {
+  return kind == NodeKind::int_round || kind == NodeKind::int_trunc;
+}
+
+int element_bytes(const ArrayDecl& array, bool real64) {
+  return array.element == ElementType::int32 || !real64 ? 4 : 8;
+}
 
 Recording::Recording(std::string name, bool real64)
     : name_(std::move(name)), real64_(real64), serial_(next_serial()) {
@@ -59,8 +66,9 @@ RecordingScope::~RecordingScope() {
   Recording::active() = outer_;
 }
 
-int Recording::declare_array(std::string name, std::int64_t length, ArrayStorage storage) {
-  arrays_.push_back({std::move(name), length, storage});
+int Recording::declare_array(std::string name, std::int64_t length, ArrayStorage storage,
+                             ElementType element) {
+  arrays_.push_back({std::move(name), length, storage, element});
   return int(arrays_.size()) - 1;
 }
 
@@ -101,22 +109,50 @@ int Recording::constant(double value) {
   return add_node(n);
 }
 
+int Recording::integer_constant(std::int32_t value) {
+  Node n;
+  n.kind = NodeKind::constant;
+  n.integer = true;
+  n.value = value;
+  return add_node(n);
+}
+
 // Every load and store gets an access of its own (a copy of the element's), so that each can be
 // subscripted as the loop it happens in has it: the element u[7] is u[k+1] when k = 6 and u[k+3]
 // when k = 4.
-int Recording::load(int access) {
+int Recording::load(int access, double value) {
   Node n;
   n.kind = NodeKind::load;
   n.access = this->access(accesses_.at(std::size_t(access)).array,
                           accesses_.at(std::size_t(access)).index);
+  n.integer =
+      arrays_[std::size_t(accesses_[std::size_t(n.access)].array)].element == ElementType::int32;
+  if (n.integer) n.value = value;
   return add_node(n);
 }
 
-int Recording::operation(NodeKind kind, int a, int b) {
+// An operation is of its first operand's type, but for the conversions, which change it. A
+// conversion of a constant is a constant of the other type, as the compiler folds it.
+int Recording::operation(NodeKind kind, int a, int b, double value) {
+  const Node& first = nodes_.at(std::size_t(a));
+  if (first.kind == NodeKind::constant && kind == NodeKind::to_real)
+    return constant(real64_ ? first.value : double(float(first.value)));
+  if (first.kind == NodeKind::constant && is_conversion_to_int(kind))
+    return integer_constant(std::int32_t(value));
   Node n;
   n.kind = kind;
   n.a = a;
   n.b = b;
+  if (kind == NodeKind::to_real)
+    n.integer = false;
+  else if (is_conversion_to_int(kind))
+    n.integer = true;
+  else
+    n.integer = first.integer;
+  if (n.integer) n.value = value;
+  if (b >= 0 && !is_conversion_to_int(kind) && kind != NodeKind::to_real &&
+      nodes_.at(std::size_t(b)).integer != n.integer)
+    throw std::logic_error("Recording::operation: an INT and a REAL operand");
   return add_node(n);
 }
 
@@ -127,6 +163,12 @@ void Recording::store(int access, int node) {
                           accesses_.at(std::size_t(access)).index);
   e.node = node;
   add_event(e);
+}
+
+int Recording::comparison(NodeKind kind, int a, int b, bool inverted) {
+  const int n = operation(kind, a, b);
+  nodes_[std::size_t(n)].inverted = inverted;
+  return n;
 }
 
 void Recording::test(int comparison, bool outcome) {

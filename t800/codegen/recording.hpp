@@ -32,9 +32,25 @@ enum class NodeKind : std::uint8_t {
   equal,    // a = b (fpeq)
   sine,     // calls of the occam library's SIN and COS routines
   cosine,
+  // INT only (Node::integer): the remainder, bitwise operations and shifts.
+  rem,          // a \ b
+  bit_and,      // a /\ b
+  bit_or,       // a \/ b
+  bit_xor,      // a >< b
+  bit_not,      // ~ a
+  shift_left,   // a << b
+  shift_right,  // a >> b (logical)
+  // Conversions between INT and REAL: REALn ROUND a (an INT node a, a REAL result), INT ROUND a
+  // and INT TRUNC a (a REAL node a, an INT result).
+  to_real,
+  int_round,
+  int_trunc,
 };
 bool is_comparison(NodeKind kind);
 bool is_routine(NodeKind kind);
+// The value is an INT computed by the REAL arithmetic (INT ROUND/TRUNC): a local variable always,
+// as the conversion goes through the workspace (fpstnli32).
+bool is_conversion_to_int(NodeKind kind);
 
 // An element of a declared array, as recorded (the index is the concrete one; the generator works
 // out from the loop it is in whether the code subscripts it by the loop's index).
@@ -45,9 +61,15 @@ struct Access {
 
 struct Node {
   NodeKind kind = NodeKind::constant;
+  // An INT (32-bit, on the integer stack) rather than a REAL of the recording's precision; for a
+  // comparison, an INT comparison (gt, diff on the integer stack).
+  bool integer = false;
+  // An INT comparison whose condition is the instruction's result negated: a >= b is NOT (b > a)
+  // (gt; eqc 0), a <> b is a - b non-zero (diff alone).
+  bool inverted = false;
   int a = -1, b = -1;  // operands
   int access = -1;     // load: index into Recording::accesses()
-  double value = 0;    // constant
+  double value = 0;    // a constant's; an INT node's value as the run computed it
   int block = 0;       // the block (straight-line code or one loop iteration) it was computed in
 };
 
@@ -55,11 +77,20 @@ struct Node {
 // (a parameter, or an array in vector space) or inside the workspace itself.
 enum class ArrayStorage : std::uint8_t { pointer, workspace };
 
+// What an array holds: REALs of the recording's precision, or INTs (a word each).
+enum class ElementType : std::uint8_t { real, int32 };
+
 struct ArrayDecl {
   std::string name;
   std::int64_t length = 0;
   ArrayStorage storage = ArrayStorage::pointer;
+  ElementType element = ElementType::real;
 };
+// An element's size in bytes and in workspace words.
+int element_bytes(const ArrayDecl& array, bool real64);
+inline int element_words(const ArrayDecl& array, bool real64) {
+  return element_bytes(array, real64) / 4;
+}
 
 // Integer work a kernel states where occam would have it (elimination's pivot bookkeeping, the
 // FPU error flag test): the code generator emits the instructions each one compiles to.
@@ -122,14 +153,19 @@ class Recording {
 
   // ---- Declarations (by kernels and their callers) ----
   int declare_array(std::string name, std::int64_t length,
-                    ArrayStorage storage = ArrayStorage::pointer);
+                    ArrayStorage storage = ArrayStorage::pointer,
+                    ElementType element = ElementType::real);
   int access(int array, std::int64_t index);
 
-  // ---- Called by the recording scalar ----
+  // ---- Called by the recording scalars ----
   int constant(double value);
-  int load(int access);
-  int operation(NodeKind kind, int a, int b = -1);
+  int integer_constant(std::int32_t value);
+  // `value`: an INT's, as the run computed it (a shift's time depends on its count); a REAL's is
+  // not kept.
+  int load(int access, double value = 0);
+  int operation(NodeKind kind, int a, int b = -1, double value = 0);
   void store(int access, int node);
+  int comparison(NodeKind kind, int a, int b, bool inverted);
   void test(int comparison, bool outcome);
 
   // ---- Called by occam structure markers ----

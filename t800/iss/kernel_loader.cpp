@@ -150,8 +150,13 @@ constexpr Word kOnChipData = kMostNeg + 0x60000;
 constexpr Word kExternalData = kMostNeg + Word(kOnChipBytes);
 constexpr int kGuardWords = 16;  // below the PROC's frame, never touched
 
-void put_real(Memory& m, Word address, double value, bool real64) {
-  if (real64) {
+// An element's value, as the array holds it: an INT (a word), a REAL32 or a REAL64.
+void put_value(Memory& m, Word address, double value, int bytes, bool integer) {
+  if (integer) {
+    m.set_word(address, std::uint32_t(std::int32_t(value)));
+    return;
+  }
+  if (bytes == 8) {
     std::uint8_t b[8];
     std::memcpy(b, &value, 8);
     m.write(address, b, 8);
@@ -163,8 +168,9 @@ void put_real(Memory& m, Word address, double value, bool real64) {
   }
 }
 
-double get_real(const Memory& m, Word address, bool real64) {
-  if (real64) {
+double get_value(const Memory& m, Word address, int bytes, bool integer) {
+  if (integer) return double(std::int32_t(m.word(address)));
+  if (bytes == 8) {
     std::uint8_t b[8];
     m.read(address, b, 8);
     double d;
@@ -241,14 +247,16 @@ KernelExecution execute_kernel(const CodeUnit& unit, const codegen::Recording& r
       element0[a] = frame_ptr + Word(4 * frame.array_base(int(a)));
     } else {
       element0[a] = data;
-      data += Word(decl.length) * real_bytes;
+      data += Word(decl.length) * Word(codegen::element_bytes(decl, real64));
       data = (data + 7) & ~7u;
       memory.set_word(frame_ptr + Word(4 * frame.array_base(int(a))), element0[a]);
     }
     for (std::int64_t i = 0; i < decl.length; ++i) {
       double v = 0;
       if (a < inputs.size() && std::size_t(i) < inputs[a].size()) v = inputs[a][std::size_t(i)];
-      put_real(memory, element0[a] + Word(i) * real_bytes, v, real64);
+      const int bytes = codegen::element_bytes(decl, real64);
+      put_value(memory, element0[a] + Word(i) * Word(bytes), v, bytes,
+                decl.element == codegen::ElementType::int32);
     }
   }
   const bool regions_fit =
@@ -336,7 +344,8 @@ KernelExecution execute_kernel(const CodeUnit& unit, const codegen::Recording& r
               return x;
             }
             for (std::size_t c = 0; c < unit.constants.size(); ++c)
-              put_real(memory, table + Word(c) * real_bytes, unit.constants[c], real64);
+              put_value(memory, table + Word(c) * real_bytes, unit.constants[c], int(real_bytes),
+                        false);
           }
           break;
         default:
@@ -381,9 +390,12 @@ KernelExecution execute_kernel(const CodeUnit& unit, const codegen::Recording& r
   x.error = core.registers().error;
   x.fp_error = core.fpu().error();
   x.arrays.resize(arrays);
-  for (std::size_t a = 0; a < arrays; ++a)
+  for (std::size_t a = 0; a < arrays; ++a) {
+    const int bytes = codegen::element_bytes(unit.arrays[a], real64);
     for (std::int64_t i = 0; i < unit.arrays[a].length; ++i)
-      x.arrays[a].push_back(get_real(memory, element0[a] + Word(i) * real_bytes, real64));
+      x.arrays[a].push_back(get_value(memory, element0[a] + Word(i) * Word(bytes), bytes,
+                                      unit.arrays[a].element == codegen::ElementType::int32));
+  }
   return x;
 }
 

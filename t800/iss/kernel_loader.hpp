@@ -46,7 +46,8 @@ struct KernelPlacement {
 };
 
 struct KernelExecution {
-  // Every array's elements after the run (REAL32 ones widened), by the unit's array index.
+  // Every array's elements after the run (REAL32 ones widened, INTs exact), by the unit's array
+  // index.
   std::vector<std::vector<double>> arrays;
   std::int64_t cycles = 0;        // the ISS's, from the first instruction to the end of the last
   std::int64_t instructions = 0;  // executed by the ISS

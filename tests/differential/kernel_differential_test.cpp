@@ -12,6 +12,11 @@
 //   elimination every piece the pipeline runs (augment, scale, limit, pivot, eliminate, bound,
 //              check, back substitution) through the pipeline's own PieceCode, for both pivoting
 //              strategies, with and without the growth check, on a system that interchanges;
+//   INT        kernels of t800sim::Int written here (no program of the project records INT work
+//              yet): a polynomial by Horner's rule, shifts by counts from data, bitwise
+//              operations, / and \ of negative operands, a count under an IF in the loop, a
+//              product of products that needs the integer stack three deep on both sides, and
+//              REAL work on converted INTs (REALn ROUND, INT ROUND, INT TRUNC);
 //   SDK        LOOP7 (programs/livermore), BLOCK.MAC (programs/systolic), TRACE.LINE
 //              (programs/raytrace), SUM (examples/sumfarm), recorded as those programs record them.
 // Each in REAL32 and REAL64, compiled checked and unchecked, run with everything on chip and with
@@ -70,27 +75,63 @@ struct Replay {
                       // other way
 };
 
+// occam's INT operations, as the occam 2 reference manual defines them (checked + - * / \, /
+// truncating towards zero, \ with the dividend's sign, logical shifts of 0 to 32 places).
+std::int64_t int_operation(NodeKind kind, std::int64_t a, std::int64_t b) {
+  const auto u = [](std::int64_t x) { return std::uint32_t(std::int32_t(x)); };
+  switch (kind) {
+    case NodeKind::add:
+      return a + b;
+    case NodeKind::sub:
+      return a - b;
+    case NodeKind::mul:
+      return a * b;
+    case NodeKind::div:
+      return a / b;
+    case NodeKind::rem:
+      return a % b;
+    case NodeKind::bit_and:
+      return std::int32_t(u(a) & u(b));
+    case NodeKind::bit_or:
+      return std::int32_t(u(a) | u(b));
+    case NodeKind::bit_xor:
+      return std::int32_t(u(a) ^ u(b));
+    case NodeKind::bit_not:
+      return std::int32_t(~u(a));
+    case NodeKind::shift_left:
+      return b >= 32 ? 0 : std::int32_t(u(a) << b);
+    case NodeKind::shift_right:
+      return b >= 32 ? 0 : std::int32_t(u(a) >> b);
+    default:
+      return 0;
+  }
+}
+
+// Every node's value is kept as a double: a REAL of precision T (computed in T), or an INT.
 template <class T>
 Replay replay_as(const Recording& r, const Values& inputs) {
   Replay out;
-  std::vector<std::vector<std::optional<T>>> state(r.arrays().size());
+  std::vector<std::vector<std::optional<double>>> state(r.arrays().size());
   for (std::size_t a = 0; a < r.arrays().size(); ++a) {
+    const bool ints = r.arrays()[a].element == t800::codegen::ElementType::int32;
     state[a].resize(std::size_t(r.arrays()[a].length));
     if (a < inputs.size())
       for (std::size_t i = 0; i < inputs[a].size() && i < state[a].size(); ++i)
-        state[a][i] = T(inputs[a][i]);
+        state[a][i] = ints ? inputs[a][i] : double(T(inputs[a][i]));
   }
-  std::vector<T> value(r.nodes().size(), T(0));
+  std::vector<double> value(r.nodes().size(), 0.0);
   std::vector<bool> truth(r.nodes().size(), false);
   for (const auto& e : r.events()) {
     if (e.kind == EventKind::value) {
       const auto& n = r.nodes()[std::size_t(e.node)];
-      const T a = n.a >= 0 ? value[std::size_t(n.a)] : T(0);
-      const T b = n.b >= 0 ? value[std::size_t(n.b)] : T(0);
-      T& v = value[std::size_t(e.node)];
+      const double da = n.a >= 0 ? value[std::size_t(n.a)] : 0.0;
+      const double db = n.b >= 0 ? value[std::size_t(n.b)] : 0.0;
+      const T a = T(da), b = T(db);
+      const bool int_operands = n.a >= 0 && r.nodes()[std::size_t(n.a)].integer;
+      double& v = value[std::size_t(e.node)];
       switch (n.kind) {
         case NodeKind::constant:
-          v = T(n.value);
+          v = n.integer ? n.value : double(T(n.value));
           break;
         case NodeKind::load: {
           const auto& acc = r.accesses()[std::size_t(n.access)];
@@ -103,39 +144,58 @@ Replay replay_as(const Recording& r, const Values& inputs) {
           v = *element;
           break;
         }
-        case NodeKind::add:
-          v = a + b;
-          break;
-        case NodeKind::sub:
-          v = a - b;
-          break;
-        case NodeKind::mul:
-          v = a * b;
-          break;
-        case NodeKind::div:
-          v = a / b;
-          break;
-        case NodeKind::neg:
-          v = -a;
-          break;
-        case NodeKind::abs:
-          v = std::fabs(a);
-          break;
-        case NodeKind::sqrt:
-          v = std::sqrt(a);
-          break;
-        case NodeKind::sine:
-          v = std::sin(a);
-          break;
-        case NodeKind::cosine:
-          v = std::cos(a);
-          break;
-        case NodeKind::greater:
-          truth[std::size_t(e.node)] = a > b;
+        case NodeKind::greater:  // an INT test keeps its condition, which may be NOT (a > b)
+          truth[std::size_t(e.node)] = int_operands ? (da > db) != n.inverted : a > b;
           break;
         case NodeKind::equal:
-          truth[std::size_t(e.node)] = a == b;
+          truth[std::size_t(e.node)] = int_operands ? (da == db) != n.inverted : a == b;
           break;
+        case NodeKind::to_real:
+          v = double(T(da));  // an INT is exact in a double; T rounds it to nearest
+          break;
+        case NodeKind::int_round:
+          v = std::nearbyint(double(a));
+          break;
+        case NodeKind::int_trunc:
+          v = std::trunc(double(a));
+          break;
+        default:
+          if (n.integer) {
+            v = double(int_operation(n.kind, std::int64_t(da), std::int64_t(db)));
+            break;
+          }
+          switch (n.kind) {
+            case NodeKind::add:
+              v = double(T(a + b));
+              break;
+            case NodeKind::sub:
+              v = double(T(a - b));
+              break;
+            case NodeKind::mul:
+              v = double(T(a * b));
+              break;
+            case NodeKind::div:
+              v = double(T(a / b));
+              break;
+            case NodeKind::neg:
+              v = double(T(-a));
+              break;
+            case NodeKind::abs:
+              v = double(T(std::fabs(a)));
+              break;
+            case NodeKind::sqrt:
+              v = double(T(std::sqrt(a)));
+              break;
+            case NodeKind::sine:
+              v = double(T(std::sin(a)));
+              break;
+            case NodeKind::cosine:
+              v = double(T(std::cos(a)));
+              break;
+            default:
+              out.error = "a node the replay does not know";
+              return out;
+          }
       }
     } else if (e.kind == EventKind::store) {
       const auto& acc = r.accesses()[std::size_t(e.access)];
@@ -147,7 +207,7 @@ Replay replay_as(const Recording& r, const Values& inputs) {
   }
   out.arrays.resize(state.size());
   for (std::size_t a = 0; a < state.size(); ++a)
-    for (const auto& element : state[a]) out.arrays[a].push_back(element ? double(*element) : 0.0);
+    for (const auto& element : state[a]) out.arrays[a].push_back(element ? *element : 0.0);
   return out;
 }
 
@@ -160,6 +220,11 @@ bool same_bits(double a, double b, bool real64) {
   if (real64) return std::memcmp(&a, &b, 8) == 0;
   const float fa = float(a), fb = float(b);
   return std::memcmp(&fa, &fb, 4) == 0;
+}
+
+// INTs and REAL64s are compared as doubles (an INT is exact in one), REAL32s as floats.
+bool exact(const Recording& r, int array) {
+  return r.real64() || r.arrays()[std::size_t(array)].element == t800::codegen::ElementType::int32;
 }
 
 // ---- The kernels ----
@@ -545,6 +610,115 @@ void sdk_kernels(std::vector<Kernel>& out) {
   }
 }
 
+// Kernels of INTs (and REALs converted from and to them), recorded as a user's program would.
+template <class S>
+void int_kernels(std::vector<Kernel>& out) {
+  using t800sim::Int;
+  const bool real64 = std::is_same_v<S, dynamics::Counted<double>>;
+  using T = typename S::value_type;
+  const std::string precision = real64 ? " (REAL64)" : " (REAL32)";
+  const auto ints = [](std::vector<std::int32_t> v) {
+    std::vector<Int> out;
+    for (std::int32_t x : v) out.push_back(Int(x));
+    return out;
+  };
+  const auto add = [&](const std::string& name, auto body) {
+    Kernel k{"INT", name, nullptr, {}, {}, nullptr};
+    k.recording = t800sim::record_kernel<S>(name, [&] { body(k); }).work().code;
+    out.push_back(std::move(k));
+  };
+  if (!real64) {                  // INT alone: the same code in either precision
+    add("POLY", [&](Kernel& k) {  // y[i] := ((c3 * x[i] + c2) * x[i] + c1) * x[i] + c0
+      auto c = ints({7, -3, 5, 2}), x = ints({-9, -1, 0, 4, 11, 300}), y = ints({0, 0, 0, 0, 0, 0});
+      t800sim::declare(c, "c");
+      t800sim::declare(x, "x");
+      t800sim::declare(y, "y");
+      k.inputs = {values_of(c), values_of(x), values_of(y)};
+      for (std::size_t i : t800sim::seq<Int>(x.size()))
+        y[i] = ((c[3] * x[i] + c[2]) * x[i] + c[1]) * x[i] + c[0];
+      k.outputs[2] = values_of(y);
+    });
+    add("BITS", [&](Kernel& k) {  // y[i] := ((x[i] << s[i]) >< (x[i] >> 3)) /\ m \/ (~ x[i])
+      auto x = ints({0x12345678, -1, 5, -2147483647 - 1}), s = ints({0, 5, 31, 32}),
+           y = ints({0, 0, 0, 0});
+      Int m = 0x0F0F0F0F;
+      t800sim::declare(x, "x");
+      t800sim::declare(s, "s");
+      t800sim::declare(y, "y");
+      t800sim::declare_variable(m, "m");
+      k.inputs = {values_of(x), values_of(s), values_of(y), {double(m.value())}};
+      for (std::size_t i : t800sim::seq<Int>(x.size()))
+        y[i] = (((x[i] << s[i]) ^ (x[i] >> Int(3))) & m) | ~x[i];
+      k.outputs[2] = values_of(y);
+    });
+    add("DIVREM", [&](Kernel& k) {  // q[i] := a[i] / b[i]; r[i] := a[i] \ b[i]
+      auto a = ints({17, -17, 17, -17, 2147483647}), b = ints({5, 5, -5, -5, 2}),
+           q = ints({0, 0, 0, 0, 0}), r = ints({0, 0, 0, 0, 0});
+      t800sim::declare(a, "a");
+      t800sim::declare(b, "b");
+      t800sim::declare(q, "q");
+      t800sim::declare(r, "r");
+      k.inputs = {values_of(a), values_of(b), values_of(q), values_of(r)};
+      for (std::size_t i : t800sim::seq<Int>(a.size())) {
+        q[i] = a[i] / b[i];
+        r[i] = a[i] % b[i];
+      }
+      k.outputs[2] = values_of(q);
+      k.outputs[3] = values_of(r);
+    });
+    add("COUNT.ABOVE", [&](Kernel& k) {  // IFs on >, =, >=, <>, <= of INTs in the loop
+      auto x = ints({3, 9, -4, 9, 12, 0, 9}), acc = ints({0, 0});
+      Int t = 9;
+      t800sim::declare(x, "x");
+      t800sim::declare(acc, "acc");
+      t800sim::declare_variable(t, "t");
+      k.inputs = {values_of(x), values_of(acc), {double(t.value())}};
+      for (std::size_t i : t800sim::seq<Int>(x.size())) {
+        if (x[i] > t)
+          acc[0] = acc[0] + Int(1);
+        else if (x[i] == t)
+          acc[1] = acc[1] - Int(std::int32_t(i));
+        if (x[i] >= t && x[i] != Int(12)) acc[0] = acc[0] * Int(2);
+        if (x[i] <= Int(0)) acc[1] = acc[1] << Int(1);
+      }
+      k.outputs[1] = values_of(acc);
+    });
+    add("DEEP", [&](Kernel& k) {  // z[i] := (a[i]*b[i] + c[i]*d[i]) - (a[i]*d[i] - (b[i]*c[i]))
+      auto a = ints({3, -7}), b = ints({11, 13}), c = ints({-2, 5}), d = ints({17, 19}),
+           z = ints({0, 0});
+      t800sim::declare(a, "a");
+      t800sim::declare(b, "b");
+      t800sim::declare(c, "c");
+      t800sim::declare(d, "d");
+      t800sim::declare(z, "z");
+      k.inputs = {values_of(a), values_of(b), values_of(c), values_of(d), values_of(z)};
+      for (std::size_t i : t800sim::seq<Int>(a.size()))
+        z[i] = (a[i] * b[i] + c[i] * d[i]) - (a[i] * d[i] - b[i] * c[i]);
+      k.outputs[4] = values_of(z);
+    });
+  }
+  add("CONVERT" + precision, [&](Kernel& k) {
+    // y[i] := y[i] + (REALn ROUND n[i]) * a; r[i] := INT ROUND y[i]; t[i] := INT TRUNC y[i]
+    auto n = ints({-3, 0, 7, 1000001}), r = ints({0, 0, 0, 0}), t = ints({0, 0, 0, 0});
+    std::vector<S> y{S(T(0.25)), S(T(-1.5)), S(T(2.5)), S(T(-0.75))};
+    S a = T(0.5);
+    t800sim::declare(n, "n");
+    t800sim::declare(y, "y");
+    t800sim::declare(r, "r");
+    t800sim::declare(t, "t");
+    t800sim::declare_variable(a, "a");
+    k.inputs = {values_of(n), values_of(y), values_of(r), values_of(t), {double(a.value())}};
+    for (std::size_t i : t800sim::seq<S>(n.size())) {
+      y[i] = y[i] + t800sim::to_real<S>(n[i]) * a;
+      r[i] = t800sim::int_round(y[i]);
+      t[i] = t800sim::int_trunc(y[i]);
+    }
+    k.outputs[1] = values_of(y);
+    k.outputs[2] = values_of(r);
+    k.outputs[3] = values_of(t);
+  });
+}
+
 std::vector<Kernel> all_kernels() {
   std::vector<Kernel> k;
   dynamics_kernels<dynamics::Counted<float>>(k);
@@ -555,6 +729,8 @@ std::vector<Kernel> all_kernels() {
   elimination_kernels<double>(k);
   sdk_kernels<dynamics::Counted<float>>(k);
   sdk_kernels<dynamics::Counted<double>>(k);
+  int_kernels<dynamics::Counted<float>>(k);
+  int_kernels<dynamics::Counted<double>>(k);
   return k;
 }
 
@@ -628,7 +804,7 @@ TEST(KernelDifferential, EveryRecordedKernelRunsOnTheIssAsTheModelSays) {
     for (const auto& [array, held] : k.outputs) {
       ASSERT_EQ(held.size(), expected.arrays[std::size_t(array)].size());
       for (std::size_t i = 0; i < held.size(); ++i)
-        EXPECT_TRUE(same_bits(held[i], expected.arrays[std::size_t(array)][i], r.real64()))
+        EXPECT_TRUE(same_bits(held[i], expected.arrays[std::size_t(array)][i], exact(r, array)))
             << "the replay is not the C++ kernel: " << r.arrays()[std::size_t(array)].name << "["
             << i << "]";
     }
@@ -665,7 +841,7 @@ TEST(KernelDifferential, EveryRecordedKernelRunsOnTheIssAsTheModelSays) {
               negated_zero.insert(k.name);
               continue;
             }
-            EXPECT_TRUE(same_bits(x.arrays[a][i], expected.arrays[a][i], r.real64()))
+            EXPECT_TRUE(same_bits(x.arrays[a][i], expected.arrays[a][i], exact(r, int(a))))
                 << r.arrays()[a].name << "[" << i << "]: ISS " << x.arrays[a][i] << ", C++ "
                 << expected.arrays[a][i];
           }
@@ -675,7 +851,7 @@ TEST(KernelDifferential, EveryRecordedKernelRunsOnTheIssAsTheModelSays) {
   EXPECT_EQ(not_run, kNotRunnable);
   EXPECT_EQ(negated_zero, kNegatedZero);
   EXPECT_EQ(families, (std::set<std::string>{"dynamics subtask", "dynamics master", "trajectory",
-                                             "elimination", "SDK"}));
+                                             "elimination", "SDK", "INT"}));
   std::cout << "kernel differential: " << kernels.size() << " kernels, " << runs
             << " executions (kernel x checking x placement), " << sequences << " sequences, "
             << instructions << " instructions, " << values << " values compared; not run: ";

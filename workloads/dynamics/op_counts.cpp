@@ -6,9 +6,10 @@ namespace dynamics {
 
 std::string to_string(const OpCounts& counts) {
   const std::pair<const char*, long> fields[] = {
-      {"fadd", counts.fadd},   {"fmul", counts.fmul},       {"fdiv", counts.fdiv},
-      {"fsqrt", counts.fsqrt}, {"fsincos", counts.fsincos}, {"fcompare", counts.fcompare},
-      {"fload", counts.fload}, {"fstore", counts.fstore},   {"int_ops", counts.int_ops}};
+      {"fadd", counts.fadd},       {"fmul", counts.fmul},       {"fdiv", counts.fdiv},
+      {"fsqrt", counts.fsqrt},     {"fsincos", counts.fsincos}, {"fcompare", counts.fcompare},
+      {"fload", counts.fload},     {"fstore", counts.fstore},   {"int_ops", counts.int_ops},
+      {"int_mul", counts.int_mul}, {"int_div", counts.int_div}};
   std::string text;
   for (const auto& [name, value] : fields) {
     if (value == 0) continue;

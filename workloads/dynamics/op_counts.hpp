@@ -20,7 +20,10 @@ namespace dynamics {
 //             that uses it (a DH step, a link's contribution)
 //   fstore    REAL results stored (one per subtask; the message values, for the master)
 //   int_ops   integer and control operations a kernel counts explicitly (loop bookkeeping,
-//             indexing); the dynamics kernels are straight-line code per subtask and count none
+//             indexing), and t800sim::Int's one-cycle operations, comparisons and conversions;
+//             the dynamics kernels are straight-line code per subtask and count none
+//   int_mul   t800sim::Int products (mul)
+//   int_div   t800sim::Int quotients and remainders (div, rem)
 // Spills of intermediate values and the integer work of straight-line code are not counted; they
 // belong to the compiled code's efficiency, which the cost model carries as one global factor.
 struct OpCounts {
@@ -33,6 +36,8 @@ struct OpCounts {
   long fload = 0;
   long fstore = 0;
   long int_ops = 0;
+  long int_mul = 0;
+  long int_div = 0;
 
   OpCounts& operator+=(const OpCounts& other) {
     fadd += other.fadd;
@@ -44,6 +49,8 @@ struct OpCounts {
     fload += other.fload;
     fstore += other.fstore;
     int_ops += other.int_ops;
+    int_mul += other.int_mul;
+    int_div += other.int_div;
     return *this;
   }
 
@@ -58,7 +65,8 @@ inline OpCounts operator+(OpCounts a, const OpCounts& b) {
 inline bool operator==(const OpCounts& a, const OpCounts& b) {
   return a.fadd == b.fadd && a.fmul == b.fmul && a.fdiv == b.fdiv && a.fsqrt == b.fsqrt &&
          a.fsincos == b.fsincos && a.fcompare == b.fcompare && a.fload == b.fload &&
-         a.fstore == b.fstore && a.int_ops == b.int_ops;
+         a.fstore == b.fstore && a.int_ops == b.int_ops && a.int_mul == b.int_mul &&
+         a.int_div == b.int_div;
 }
 inline bool operator!=(const OpCounts& a, const OpCounts& b) {
   return !(a == b);

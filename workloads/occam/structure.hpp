@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "t800/codegen/recording.hpp"
@@ -95,6 +96,13 @@ Seq<S> seq(std::size_t first, std::size_t count) {
   return Seq<S>(first, count);
 }
 
+// What an array of S holds in the recording: INTs (t800sim::Int) or REALs.
+template <class S>
+constexpr t800::codegen::ElementType element_type() {
+  return std::is_integral_v<typename S::value_type> ? t800::codegen::ElementType::int32
+                                                    : t800::codegen::ElementType::real;
+}
+
 // Makes values an array of the active recording: reading an element is a load, assigning one a
 // store. `in_workspace`: a small local array in the PROC's workspace rather than one reached
 // through a pointer (a parameter or vector space).
@@ -105,7 +113,8 @@ void declare(S* values, std::size_t count, const char* name, bool in_workspace =
     if (!r) return;
     const int array = r->declare_array(name, std::int64_t(count),
                                        in_workspace ? t800::codegen::ArrayStorage::workspace
-                                                    : t800::codegen::ArrayStorage::pointer);
+                                                    : t800::codegen::ArrayStorage::pointer,
+                                       element_type<S>());
     for (std::size_t i = 0; i < count; ++i) values[i].bind(r->access(array, std::int64_t(i)));
   }
 }
@@ -123,7 +132,8 @@ void declare_each(const std::vector<S*>& elements, const char* name) {
   if constexpr (dynamics::is_counted_v<S>) {
     auto* r = t800::codegen::Recording::current();
     if (!r) return;
-    const int array = r->declare_array(name, std::int64_t(elements.size()));
+    const int array = r->declare_array(name, std::int64_t(elements.size()),
+                                       t800::codegen::ArrayStorage::pointer, element_type<S>());
     for (std::size_t i = 0; i < elements.size(); ++i)
       elements[i]->bind(r->access(array, std::int64_t(i)));
   }

@@ -13,6 +13,8 @@ t800::OperationMix to_operation_mix(const dynamics::OpCounts& c) {
   m.fp_loads = c.fload;
   m.fp_stores = c.fstore;
   m.int_simple = c.int_ops;
+  m.int_mul = c.int_mul;
+  m.int_div = c.int_div;
   m.calls = 1;
   return m;
 }

@@ -1,0 +1,154 @@
+// INT expressions compiled onto the integer stack, against sequences derived by hand from the
+// INMOS occam compiler's back end (occ21, concurrency/kroc tools/occ21/be: gen4.c tdop for the
+// operators and their evaluation order, gen7.c trelop and tguard for comparisons and the IF's cj,
+// code1k.c genshiftimmediate for constant shifts, tran1.c for the checked shift count and the
+// unchecked product) and the compiler writer's guide's instruction definitions. Compiled with
+// occam's default run-time checks unless a test says otherwise. Variables a..h are workspace
+// words 2..9 (after the integer variable and the constant table's pointer), x and y INT arrays
+// reached through pointers in words 10 and 11.
+#include <gtest/gtest.h>
+
+#include "tests/codegen/codegen_fixtures.hpp"
+
+namespace {
+
+using codegen_test::body_code;
+using t800::codegen::CodeUnit;
+using t800::codegen::Target;
+using Int = dynamics::CountedInt;  // t800sim::Int
+using Seq = std::vector<std::string>;
+
+template <class Body>
+CodeUnit compile_int(Body body, Target target = Target{true, true}) {
+  t800::codegen::Recording r("K", false);
+  {
+    const t800::codegen::RecordingScope scope(r);
+    Int a(1), b(2), c(3), d(4), e(5), f(6), g(7), h(8);
+    for (Int* v : {&a, &b, &c, &d, &e, &f, &g, &h}) occam::declare_variable(*v, "v");
+    std::vector<Int> x(8, Int(0)), y(8, Int(1));
+    occam::declare(x, "x");
+    occam::declare(y, "y");
+    body(a, b, c, d, e, f, g, h, x, y);
+  }
+  return t800::codegen::generate(r, target);
+}
+
+TEST(GeneratedIntegerCode, ASumIsLoadedAddedAndStoredThroughThePointer) {
+  const CodeUnit u = compile_int([](Int& a, Int& b, auto&, auto&, auto&, auto&, auto&, auto&,
+                                    auto& x, auto&) { x[0] = a + b; });
+  EXPECT_EQ(body_code(u), (Seq{"ldl 2", "ldl 3", "add", "ldl 10", "stnl 0"}));
+}
+
+TEST(GeneratedIntegerCode, AConstantOperandIsAdcOrEqc) {
+  const CodeUnit minus = compile_int([](Int& a, auto&, auto&, auto&, auto&, auto&, auto&, auto&,
+                                        auto& x, auto&) { x[1] = a - Int(5); });
+  EXPECT_EQ(body_code(minus), (Seq{"ldl 2", "adc -5", "ldl 10", "stnl 1"}));
+  const CodeUnit test =
+      compile_int([](Int& a, auto&, Int& c, auto&, auto&, auto&, auto&, auto&, auto&, auto&) {
+        if (a == Int(1)) c = Int(0);
+      });
+  EXPECT_EQ(body_code(test), (Seq{"ldl 2", "eqc 1", "cj 4", "ldc 0", "stl 4"}));
+}
+
+// tdop: the left operand first unless the right needs the whole stack; for a commutative
+// operation the one loaded by a single instruction goes last (so no rev is ever needed there).
+TEST(GeneratedIntegerCode, TheLeftOperandFirstButACommutativeOnesLoadLast) {
+  const CodeUnit u = compile_int([](Int& a, Int& b, Int& c, auto&, auto&, auto&, auto&, auto&,
+                                    auto& x, auto&) { x[0] = a - b * c; });
+  EXPECT_EQ(body_code(u), (Seq{"ldl 2", "ldl 3", "ldl 4", "mul", "sub", "ldl 10", "stnl 0"}));
+  const CodeUnit commutative = compile_int([](Int& a, Int& b, Int& c, auto&, auto&, auto&, auto&,
+                                              auto&, auto& x, auto&) { x[0] = a + b * c; });
+  EXPECT_EQ(body_code(commutative),
+            (Seq{"ldl 3", "ldl 4", "mul", "ldl 2", "add", "ldl 10", "stnl 0"}));
+  // The right operand needing all three registers goes first, then rev.
+  const CodeUnit deep = compile_int([](Int& a, Int& b, Int& c, Int& d, Int& e, auto&, auto&, auto&,
+                                       auto& x, auto&) { x[0] = a - (b * c - d * e); });
+  EXPECT_EQ(body_code(deep), (Seq{"ldl 3", "ldl 4", "mul", "ldl 5", "ldl 6", "mul", "sub", "ldl 2",
+                                  "rev", "sub", "ldl 10", "stnl 0"}));
+}
+
+// trelop: a > b is gt with a in B, a < b is b > a; >= and <= are those negated (eqc 0); = is
+// diff then eqc 0, <> the diff alone; cj jumps when the condition is false.
+TEST(GeneratedIntegerCode, ComparisonsAreGtAndDiffAndTheIfIsCj) {
+  const CodeUnit u =
+      compile_int([](Int& a, Int& b, Int& c, auto&, auto&, auto&, auto&, auto&, auto&, auto&) {
+        if (a < b) c = a;   // 1 < 2: true
+        if (a == b) c = b;  // false
+      });
+  EXPECT_EQ(body_code(u), (Seq{"ldl 3", "ldl 2", "gt", "cj 4", "ldl 2", "stl 4", "ldl 2", "ldl 3",
+                               "diff", "eqc 0", "cj 4"}));
+  int taken = 0;
+  for (const auto& run : u.runs)
+    for (const auto& in : run.code)
+      if (in.op == t800::isa::Op::cj) taken += int(in.param);
+  EXPECT_EQ(taken, 1);  // the second IF's condition was false: its cj jumps
+  const CodeUnit negated =
+      compile_int([](Int& a, Int& b, auto&, auto&, auto&, auto&, auto&, auto&, auto&, auto&) {
+        if (a >= b) {
+        }
+        if (a <= b) {
+        }
+        if (a != b) {
+        }
+        if (a != Int(0)) {
+        }
+      });
+  EXPECT_EQ(body_code(negated),
+            (Seq{"ldl 3", "ldl 2", "gt", "eqc 0", "cj 4", "ldl 2", "ldl 3", "gt", "eqc 0", "cj 4",
+                 "ldl 2", "ldl 3", "diff", "cj 4", "ldl 2", "cj 4"}));
+}
+
+// genshiftimmediate and tdop's special cases: << 1 is dup; bsub, << 2 bcnt, << 3 ldc 0; wsubdb,
+// >> k ldc k; shr; a * 2 is dup; add; a constant factor, not loaded from memory, goes before the
+// variable (tdop's tie-break: the operand loaded from memory last).
+TEST(GeneratedIntegerCode, ConstantShiftsAndDoublingHaveTheirOwnShapes) {
+  const CodeUnit u =
+      compile_int([](Int& a, auto&, auto&, auto&, auto&, auto&, auto&, auto&, auto& x, auto&) {
+        x[0] = a << Int(1);
+        x[1] = a << Int(2);
+        x[2] = a << Int(3);
+        x[3] = a >> Int(3);
+        x[4] = a * Int(2);
+        x[5] = Int(5) * a;
+      });
+  EXPECT_EQ(body_code(u),
+            (Seq{"ldl 2",  "dup",    "bsub",   "ldl 10", "stnl 0", "ldl 2",  "bcnt",   "ldl 10",
+                 "stnl 1", "ldl 2",  "ldc 0",  "wsubdb", "ldl 10", "stnl 2", "ldl 2",  "ldc 3",
+                 "shr",    "ldl 10", "stnl 3", "ldl 2",  "dup",    "add",    "ldl 10", "stnl 4",
+                 "ldc 5",  "ldl 2",  "mul",    "ldl 10", "stnl 5"}));
+}
+
+// Without run-time checks a product is prod, whose time is the highest set bit of A (b + 4).
+TEST(GeneratedIntegerCode, AnUncheckedProductIsProdTimedByItsOperand) {
+  const CodeUnit u = compile_int([](Int& a, Int&, Int&, Int&, Int&, Int& f, auto&, auto&, auto& x,
+                                    auto&) { x[0] = a * f; },  // f = 6: bit 2
+                                 Target{true, false});
+  EXPECT_EQ(body_code(u), (Seq{"ldl 2", "ldl 7", "prod", "ldl 10", "stnl 0"}));
+  for (const auto& run : u.runs)
+    for (const auto& in : run.code)
+      if (in.op == t800::isa::Op::prod) EXPECT_EQ(in.param, 2);
+}
+
+// A shift's time depends on the places shifted: the count as the run had it is its parameter.
+TEST(GeneratedIntegerCode, AShiftCarriesItsCountAsTheRunHadIt) {
+  const CodeUnit u = compile_int([](Int& a, auto&, auto&, auto&, auto&, auto&, auto&, Int& h,
+                                    auto& x, auto&) { x[0] = a << h; });  // h = 8
+  // A computed count is checked against 0..32 (tran1.c: CSUB0 (n, 33)).
+  EXPECT_EQ(body_code(u), (Seq{"ldl 2", "ldl 9", "ldc 33", "csub0", "shl", "ldl 10", "stnl 0"}));
+  for (const auto& run : u.runs)
+    for (const auto& in : run.code)
+      if (in.op == t800::isa::Op::shl) EXPECT_EQ(in.param, 8);
+}
+
+// bind2.c mapdop: two operands that each need all three registers (a product less a product):
+// the right one goes to a temporary (word 12, the first after the arrays' pointers), the left is
+// computed, the temporary loaded, no rev.
+TEST(GeneratedIntegerCode, BothOperandsThreeDeepSpillTheRightOne) {
+  const CodeUnit u = compile_int([](Int& a, Int& b, Int& c, Int& d, Int& e, Int& f, Int& g, Int& h,
+                                    auto& x, auto&) { x[0] = (a * b - c * d) - (e * f - g * h); });
+  EXPECT_EQ(body_code(u), (Seq{"ldl 6", "ldl 7", "mul", "ldl 8", "ldl 9", "mul", "sub", "stl 12",
+                               "ldl 2", "ldl 3", "mul", "ldl 4", "ldl 5", "mul", "sub", "ldl 12",
+                               "sub", "ldl 10", "stnl 0"}));
+}
+
+}  // namespace
