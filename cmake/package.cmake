@@ -30,6 +30,7 @@ set(T800SIM_DETAIL_HEADERS
     workloads/dynamics/counted.hpp
     workloads/dynamics/op_counts.hpp
     workloads/occam/structure.hpp
+    workloads/occam/subscript.hpp
     workloads/params.hpp
     workloads/run/result_value.hpp
     workloads/setting_error.hpp)

@@ -7,8 +7,8 @@
 # once a file; docs/developing.md says what it saves and why ./build is not built so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DT800SIM_SANITIZE=ON -DT800SIM_BENCHMARKS=OFF \
-      -DCMAKE_UNITY_BUILD=ON >/dev/null
+# Configures build-asan and fails in seconds, not after the build, on a name two sources of a batch define.
+bash scripts/unity_names.sh
 cmake --build build-asan -j"$(nproc)"
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 # Children the tests start (t800sim run, sweeps) inherit these.

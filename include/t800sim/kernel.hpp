@@ -25,6 +25,7 @@
 #include "t800/compute_work.hpp"
 #include "workloads/dynamics/counted.hpp"
 #include "workloads/occam/structure.hpp"
+#include "workloads/occam/subscript.hpp"
 
 namespace t800sim {
 
@@ -39,6 +40,9 @@ using dynamics::int_round;
 using dynamics::int_trunc;
 using dynamics::to_real;
 
+// x[k] for an INT k the kernel computes (k + 2 * h * b, perm[i]): t800sim::at(x, k), read or
+// assigned; the code computes the subscript as written (workloads/occam/subscript.hpp).
+using occam::at;
 using occam::declare;
 using occam::declare_each;
 using occam::declare_variable;

@@ -2,12 +2,6 @@
 
 namespace t800::codegen {
 
-namespace {
-bool leaf_kind(NodeKind k) {
-  return k == NodeKind::constant || k == NodeKind::load;
-}
-}  // namespace
-
 Dataflow::Dataflow(const Recording& recording) : r_(recording) {
   const std::vector<Node>& nodes = r_.nodes();
   const std::size_t n = nodes.size();
@@ -27,20 +21,24 @@ Dataflow::Dataflow(const Recording& recording) : r_(recording) {
       stack.push_back(x);
     }
   };
-  for (const Event& e : r_.events())
+  for (const Event& e : r_.events()) {
     if (e.kind == EventKind::store || e.kind == EventKind::test) use(e.node, e.block);
+    if (e.kind == EventKind::store && subscript(e.access) >= 0) use(subscript(e.access), e.block);
+  }
   while (!stack.empty()) {
     const Node& node = nodes[std::size_t(stack.back())];
     stack.pop_back();
     if (node.a >= 0) use(node.a, node.block);
     if (node.b >= 0 && through(node.b) != through(node.a))  // x * x reads x once
       use(node.b, node.block);
+    if (node.kind == NodeKind::load && subscript(node.access) >= 0)
+      use(subscript(node.access), node.block);
   }
   // A value used more than once, or in another block (a later iteration), is a local variable;
   // so is a library routine's result, and an INT converted from a REAL (through the workspace).
   for (std::size_t i = 0; i < n; ++i) {
     const NodeKind k = nodes[i].kind;
-    temporary_[i] = live_[i] && !leaf_kind(k) && !is_comparison(k) && k != NodeKind::neg &&
+    temporary_[i] = live_[i] && !is_leaf(k) && !is_comparison(k) && k != NodeKind::neg &&
                     (uses_[i] > 1 || cross[i] || is_routine(k) || is_conversion_to_int(k));
     if (live_[i] && k == NodeKind::constant && !nodes[i].integer && nodes[i].value != 0.0)
       uses_real_constants_ = true;
@@ -64,15 +62,21 @@ Dataflow::Dataflow(const Recording& recording) : r_(recording) {
       walk.push_back(x);
     };
     visit(root);
+    if (e.kind == EventKind::store) visit(subscript(e.access));
     while (!walk.empty()) {
       const Node& node = nodes[std::size_t(walk.back())];
       walk.pop_back();
       visit(node.a);
       if (node.b != node.a) visit(node.b);
+      if (node.kind == NodeKind::load) visit(subscript(node.access));
     }
   }
   for (std::size_t i = 0; i < n; ++i)
     if (temporary_[i] && last_use_[i] >= 0) release_at_.insert({last_use_[i], int(i)});
+}
+
+int Dataflow::subscript(int access) const {
+  return r_.accesses()[std::size_t(access)].subscript;
 }
 
 int Dataflow::through(int n) const {

@@ -13,6 +13,9 @@
 
 namespace t800::codegen {
 
+// The depth of the evaluation stacks, integer (A, B, C) and floating point (FA, FB, FC) alike.
+constexpr int kStackDepth = 3;
+
 class Dataflow {
  public:
   explicit Dataflow(const Recording& recording);
@@ -22,6 +25,8 @@ class Dataflow {
   int uses(int n) const { return uses_[std::size_t(n)]; }
   // n without the sign changes around it (a REAL's -x is folded into its consumer).
   int through(int n) const;
+  // The INT node an access's subscript is computed from (t800sim::at), or -1.
+  int subscript(int access) const;
   // Whether REAL constants other than 0.0 are read (the PROC then points at its constant table).
   bool uses_real_constants() const { return uses_real_constants_; }
 

@@ -17,20 +17,13 @@ using isa::Region;
 
 namespace {
 
-constexpr int kStackDepth = 3;  // FA, FB, FC
 // A call into the run-time library: a relative address some kilobytes away, linked into a
 // pfix slot (two prefix bytes).
 constexpr std::int64_t kLibraryDistance = 1024;
 
-bool leaf_kind(NodeKind k) {
-  return k == NodeKind::constant || k == NodeKind::load;
-}
 bool binary_kind(NodeKind k) {
   return k == NodeKind::add || k == NodeKind::sub || k == NodeKind::mul || k == NodeKind::div ||
          is_comparison(k);
-}
-bool commutative(NodeKind k) {
-  return k == NodeKind::add || k == NodeKind::mul || k == NodeKind::equal;
 }
 bool combinable(NodeKind k) {
   return k == NodeKind::add || k == NodeKind::mul;
@@ -178,7 +171,8 @@ ExpressionEmitter::Plan ExpressionEmitter::plan(int n) {
     // Both need registers (or a memory left operand that fits in front): the operand needing
     // more first when the order is free; left first when it is not, unless only the other
     // order fits.
-    const bool right_first = commutative(p.op) ? nr > nl : (nr >= kStackDepth && nl < kStackDepth);
+    const bool right_first =
+        is_commutative(p.op) ? nr > nl : (nr >= kStackDepth && nl < kStackDepth);
     p.first = right_first ? p.right : p.left;
     p.second = right_first ? p.left : p.right;
     const int nf = need(p.first), ns = need(p.second);
@@ -361,33 +355,15 @@ Op fp_instruction(NodeKind k) {
   }
   throw std::logic_error("fp_instruction: not a binary operation");
 }
-const char* symbol(NodeKind k) {
-  switch (k) {
-    case NodeKind::add:
-      return "+";
-    case NodeKind::sub:
-      return "-";
-    case NodeKind::mul:
-      return "*";
-    case NodeKind::div:
-      return "/";
-    case NodeKind::greater:
-      return ">";
-    case NodeKind::equal:
-      return "=";
-    default:
-      return "?";
-  }
-}
 }  // namespace
 
 void ExpressionEmitter::binary(int n) {
   const Plan p = plan(n);
   const Op op = fp_instruction(p.op);
-  const std::string note = describe(p.left) + " " + symbol(p.op) + " " + describe(p.right);
+  const std::string note = describe(p.left) + " " + operator_symbol(p.op) + " " + describe(p.right);
   // The stack computes FB op FA: for a non-commutative operation the left operand must be in FB.
   auto finish = [&](bool left_on_top) {
-    if (left_on_top && !commutative(p.op)) operation(Op::fprev, "");
+    if (left_on_top && !is_commutative(p.op)) operation(Op::fprev, "");
     operation(op, note);
   };
   switch (p.how) {
@@ -589,7 +565,7 @@ void ExpressionEmitter::soft_push(int n, int slot) {
 int ExpressionEmitter::soft_value(int n) {
   n = through(n);
   const Node& node = r_.nodes()[std::size_t(n)];
-  if (temporary(n) || leaf_kind(node.kind)) return -1;
+  if (temporary(n) || is_leaf(node.kind)) return -1;
   return soft_compute(n);
 }
 

@@ -29,10 +29,13 @@ class EmitSink {
   // The address of a recorded array element on the integer stack.
   virtual void address(int access) = 0;
   // Registers an element's address takes on the integer stack (1 for a constant subscript, 2 for
-  // a computed one), and an INT element loaded to, or stored from, A.
-  virtual int address_need(int access) const = 0;
+  // the loop's index, as many as a subscript the kernel computed needs, at least 2), and an INT
+  // element loaded to, or stored from, A.
+  virtual int address_need(int access) = 0;
   virtual void load_word(int access) = 0;
   virtual void store_word(int access) = 0;
+  // The store into an element whose address() is in A, the value in B.
+  virtual void store_word_at_address(int access) = 0;
   // "u[k+3]": the element as the code subscripts it, for listings.
   virtual std::string element(int access) const = 0;
   virtual const Target& target() const = 0;

@@ -155,19 +155,27 @@ class Generator : public EmitSink {
   std::string element(int access) const override {
     const Access& a = r_.accesses()[std::size_t(access)];
     const ArrayDecl& array = r_.arrays()[std::size_t(a.array)];
+    if (a.subscript >= 0) return array.name + "[" + integers_.describe(a.subscript) + "]";
     if (array.length == 1 && array.storage == ArrayStorage::workspace) return array.name;
     return array.name + "[" + subscript_text(subscripts_[std::size_t(access)]) + "]";
   }
 
+  // An element's address on the integer stack, for the loads and stores that take one: the
+  // subscript (the loop's index plus a constant, or the INT the kernel computed), checked against
+  // the array's bound, scaled onto the array's base.
   void address(int access) override {
     const Access& a = r_.accesses()[std::size_t(access)];
     const ArrayDecl& array = r_.arrays()[std::size_t(a.array)];
     const Subscript& s = subscripts_[std::size_t(access)];
     const std::string element = this->element(access);
     const int words = element_words(array, r_.real64());
-    if (s.by_loop) {
-      emit({Op::ldl, frame_.loop_index(s.depth), 0, false, workspace(), index_name(s.depth)});
-      if (s.offset != 0) emit({Op::adc, s.offset, 0, false, {}, element});
+    if (a.subscript >= 0 || s.by_loop) {
+      if (a.subscript >= 0) {
+        integers_.evaluate(a.subscript);
+      } else {
+        emit({Op::ldl, frame_.loop_index(s.depth), 0, false, workspace(), index_name(s.depth)});
+        if (s.offset != 0) emit({Op::adc, s.offset, 0, false, {}, element});
+      }
       if (target_.checked) {
         emit({Op::ldc, array.length, 0, false, {}, "bound of " + array.name});
         emit({Op::csub0, 0, 0, false, {}, "range check"});
@@ -180,7 +188,11 @@ class Generator : public EmitSink {
     if (s.offset != 0) emit({Op::ldnlp, s.offset * words, 0, false, {}, element});
   }
 
-  int address_need(int access) const override {
+  // The subscript, then the bound beside it (ldc; csub0) or the base (ldl; wsub): two registers
+  // at least, more for a subscript that needs them.
+  int address_need(int access) override {
+    const int subscript = r_.accesses()[std::size_t(access)].subscript;
+    if (subscript >= 0) return std::max(2, integers_.evaluation_need(subscript));
     return subscripts_[std::size_t(access)].by_loop ? 2 : 1;
   }
 
@@ -188,6 +200,9 @@ class Generator : public EmitSink {
   // ldnl/stnl from its array's pointer, one with a computed subscript through its address.
   void load_word(int access) override { word(access, false); }
   void store_word(int access) override { word(access, true); }
+  void store_word_at_address(int access) override {
+    emit({Op::stnl, 0, 0, false, element_memory(access), element(access) + " :="});
+  }
 
   const Target& target() const override { return target_; }
 
@@ -248,21 +263,28 @@ class Generator : public EmitSink {
     const ArrayDecl& array = r_.arrays()[std::size_t(a.array)];
     const Subscript& s = subscripts_[std::size_t(access)];
     const std::string what = element(access) + (store ? " :=" : "");
-    const MemoryRef data =
-        array.storage == ArrayStorage::workspace ? workspace() : MemoryRef{Region::array, a.array};
-    if (!s.by_loop && array.storage == ArrayStorage::workspace) {
+    const MemoryRef data = element_memory(access);
+    const bool computed = s.by_loop || a.subscript >= 0;
+    if (!computed && array.storage == ArrayStorage::workspace) {
       emit(
           {store ? Op::stl : Op::ldl, frame_.array_base(a.array) + s.offset, 0, false, data, what});
       return;
     }
     std::int64_t offset = 0;
-    if (s.by_loop) {
+    if (computed) {
       address(access);
     } else {
       base(a.array, what);
       offset = s.offset;
     }
     emit({store ? Op::stnl : Op::ldnl, offset, 0, false, data, what});
+  }
+
+  MemoryRef element_memory(int access) const {
+    const int array = r_.accesses()[std::size_t(access)].array;
+    return r_.arrays()[std::size_t(array)].storage == ArrayStorage::workspace
+               ? workspace()
+               : MemoryRef{Region::array, array};
   }
 
   void base(int array, const std::string& element) {

@@ -15,13 +15,6 @@ using isa::Region;
 
 namespace {
 
-constexpr int kStackDepth = 3;  // A, B, C
-
-bool commutative(NodeKind k) {
-  return k == NodeKind::add || k == NodeKind::mul || k == NodeKind::bit_and ||
-         k == NodeKind::bit_or || k == NodeKind::bit_xor || k == NodeKind::equal;
-}
-
 Op integer_instruction(NodeKind k) {
   switch (k) {
     case NodeKind::add:
@@ -52,37 +45,6 @@ Op integer_instruction(NodeKind k) {
       break;
   }
   throw std::logic_error("integer_instruction: not a binary INT operation");
-}
-
-const char* symbol(NodeKind k) {
-  switch (k) {
-    case NodeKind::add:
-      return "+";
-    case NodeKind::sub:
-      return "-";
-    case NodeKind::mul:
-      return "*";
-    case NodeKind::div:
-      return "/";
-    case NodeKind::rem:
-      return "\\";
-    case NodeKind::bit_and:
-      return "/\\";
-    case NodeKind::bit_or:
-      return "\\/";
-    case NodeKind::bit_xor:
-      return "><";
-    case NodeKind::shift_left:
-      return "<<";
-    case NodeKind::shift_right:
-      return ">>";
-    case NodeKind::greater:
-      return ">";
-    case NodeKind::equal:
-      return "=";
-    default:
-      return "?";
-  }
 }
 
 }  // namespace
@@ -189,7 +151,7 @@ IntegerEmitter::Plan IntegerEmitter::plan(int n) {
   // operation, when the left is loaded by one instruction and the right is not (tdop's tie-break:
   // the addressable operand last).
   const bool right_first =
-      nl < kStackDepth && (nr >= kStackDepth || (commutative(node.kind) && addressable(p.left) &&
+      nl < kStackDepth && (nr >= kStackDepth || (is_commutative(node.kind) && addressable(p.left) &&
                                                  !addressable(p.right)));
   p.how = right_first ? Plan::How::right_first : Plan::How::left_first;
   p.need = right_first ? std::max(nr, nl + 1) : std::max(nl, nr + 1);
@@ -263,7 +225,8 @@ void IntegerEmitter::shift_by_constant(NodeKind kind, std::int64_t k, const std:
 void IntegerEmitter::binary(int n) {
   const Node& node = r_.nodes()[std::size_t(n)];
   const Plan p = plan(n);
-  const std::string note = describe(p.left) + " " + symbol(node.kind) + " " + describe(p.right);
+  const std::string note =
+      describe(p.left) + " " + operator_symbol(node.kind) + " " + describe(p.right);
   const bool shift = node.kind == NodeKind::shift_left || node.kind == NodeKind::shift_right;
   switch (p.how) {
     case Plan::How::constant:
@@ -290,7 +253,7 @@ void IntegerEmitter::binary(int n) {
     case Plan::How::right_first:
       value(p.right);
       value(p.left);
-      if (!commutative(node.kind)) emit(Op::rev, 0, "");
+      if (!is_commutative(node.kind)) emit(Op::rev, 0, "");
       break;
     case Plan::How::spill: {
       value(p.right);
@@ -363,9 +326,29 @@ void IntegerEmitter::define(int n, int event) {
   emit(Op::stl, flow_.slot(n), name);
 }
 
+// The value, then the element's address onto it (stnl stores B at A). An address that needs the
+// whole stack (a subscript the kernel computed) goes first and the value onto it, swapped by rev;
+// a value that needs the whole stack too waits in a workspace word meanwhile.
 void IntegerEmitter::store(int node, int access, int event) {
-  value(node);
-  sink_.store_word(access);
+  if (sink_.address_need(access) < kStackDepth) {
+    value(node);
+    sink_.store_word(access);
+  } else {
+    int scratch = -1;
+    if (need(node) >= kStackDepth) {
+      value(node);
+      scratch = frame_.allocate_temporary(1);
+      emit(Op::stl, scratch, "hold " + describe(node));
+    }
+    sink_.address(access);
+    if (scratch >= 0)
+      emit(Op::ldl, scratch, "load " + describe(node));
+    else
+      value(node);
+    emit(Op::rev, 0, "");
+    sink_.store_word_at_address(access);
+    if (scratch >= 0) frame_.release_temporary(scratch, 1);
+  }
   flow_.release_after(event, frame_);
 }
 

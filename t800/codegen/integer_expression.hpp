@@ -32,6 +32,9 @@ class IntegerEmitter {
   // scratch word first when it is computed here; returns that word (to release after the load),
   // or -1.
   int push_address(int n);
+  // INT n's value into A, and the registers that takes (a computed subscript, for the generator).
+  void evaluate(int n) { value(n); }
+  int evaluation_need(int n) { return need(n); }
   isa::MemoryRef memory_of(int n) const;  // where that address points
   std::string describe(int n) const;
 

@@ -30,6 +30,46 @@ bool is_conversion_to_int(NodeKind kind) {
   return kind == NodeKind::int_round || kind == NodeKind::int_trunc;
 }
 
+bool is_leaf(NodeKind kind) {
+  return kind == NodeKind::constant || kind == NodeKind::load;
+}
+
+bool is_commutative(NodeKind kind) {
+  return kind == NodeKind::add || kind == NodeKind::mul || kind == NodeKind::bit_and ||
+         kind == NodeKind::bit_or || kind == NodeKind::bit_xor || kind == NodeKind::equal;
+}
+
+const char* operator_symbol(NodeKind kind) {
+  switch (kind) {
+    case NodeKind::add:
+      return "+";
+    case NodeKind::sub:
+      return "-";
+    case NodeKind::mul:
+      return "*";
+    case NodeKind::div:
+      return "/";
+    case NodeKind::rem:
+      return "\\";
+    case NodeKind::bit_and:
+      return "/\\";
+    case NodeKind::bit_or:
+      return "\\/";
+    case NodeKind::bit_xor:
+      return "><";
+    case NodeKind::shift_left:
+      return "<<";
+    case NodeKind::shift_right:
+      return ">>";
+    case NodeKind::greater:
+      return ">";
+    case NodeKind::equal:
+      return "=";
+    default:
+      return "?";
+  }
+}
+
 int element_bytes(const ArrayDecl& array, bool real64) {
   return array.element == ElementType::int32 || !real64 ? 4 : 8;
 }
@@ -75,7 +115,20 @@ int Recording::declare_array(std::string name, std::int64_t length, ArrayStorage
 int Recording::access(int array, std::int64_t index) {
   if (array < 0 || array >= int(arrays_.size()))
     throw std::logic_error("Recording::access: undeclared array");
-  accesses_.push_back({array, index});
+  return add_access({array, index});
+}
+
+int Recording::subscripted(int array, int subscript, std::int64_t index) {
+  if (array < 0 || array >= int(arrays_.size()))
+    throw std::logic_error("Recording::subscripted: undeclared array");
+  if (subscript < 0 || subscript >= int(nodes_.size()) || !nodes_[std::size_t(subscript)].integer)
+    throw std::logic_error("Recording::subscripted: a subscript is an INT of this recording");
+  return add_access({array, index, subscript});
+}
+
+// Every load and store has an access of its own (the generator classifies each use).
+int Recording::add_access(const Access& access) {
+  accesses_.push_back(access);
   return int(accesses_.size()) - 1;
 }
 
@@ -123,8 +176,7 @@ int Recording::integer_constant(std::int32_t value) {
 int Recording::load(int access, double value) {
   Node n;
   n.kind = NodeKind::load;
-  n.access = this->access(accesses_.at(std::size_t(access)).array,
-                          accesses_.at(std::size_t(access)).index);
+  n.access = add_access(accesses_.at(std::size_t(access)));
   n.integer =
       arrays_[std::size_t(accesses_[std::size_t(n.access)].array)].element == ElementType::int32;
   if (n.integer) n.value = value;
@@ -159,8 +211,7 @@ int Recording::operation(NodeKind kind, int a, int b, double value) {
 void Recording::store(int access, int node) {
   Event e;
   e.kind = EventKind::store;
-  e.access = this->access(accesses_.at(std::size_t(access)).array,
-                          accesses_.at(std::size_t(access)).index);
+  e.access = add_access(accesses_.at(std::size_t(access)));
   e.node = node;
   add_event(e);
 }

@@ -47,16 +47,24 @@ enum class NodeKind : std::uint8_t {
   int_trunc,
 };
 bool is_comparison(NodeKind kind);
+// A constant or a load: a value that is not computed.
+bool is_leaf(NodeKind kind);
 bool is_routine(NodeKind kind);
 // The value is an INT computed by the REAL arithmetic (INT ROUND/TRUNC): a local variable always,
 // as the conversion goes through the workspace (fpstnli32).
 bool is_conversion_to_int(NodeKind kind);
+// a op b = b op a (for REAL and INT alike).
+bool is_commutative(NodeKind kind);
+// The operator as occam writes it, for listings ("?" for what is not a binary operator).
+const char* operator_symbol(NodeKind kind);
 
-// An element of a declared array, as recorded (the index is the concrete one; the generator works
-// out from the loop it is in whether the code subscripts it by the loop's index).
+// An element of a declared array, as recorded. `index` is the concrete one. With no `subscript`,
+// the generator works out from the loop it is in whether the code subscripts it by the loop's
+// index; with one (t800sim::at), the code computes the subscript as the kernel did.
 struct Access {
   int array = -1;
   std::int64_t index = 0;
+  int subscript = -1;  // an INT node: the subscript as the kernel computed it
 };
 
 struct Node {
@@ -156,6 +164,9 @@ class Recording {
                     ArrayStorage storage = ArrayStorage::pointer,
                     ElementType element = ElementType::real);
   int access(int array, std::int64_t index);
+  // array[subscript], where INT node `subscript` (computed in this recording) had the value
+  // `index` in the run.
+  int subscripted(int array, int subscript, std::int64_t index);
 
   // ---- Called by the recording scalars ----
   int constant(double value);
@@ -187,6 +198,7 @@ class Recording {
     return recording;
   }
   int add_node(Node node);
+  int add_access(const Access& access);
   void add_event(Event e);
   int block() const;
   std::string name_;

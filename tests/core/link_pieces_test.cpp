@@ -35,7 +35,7 @@ struct Split {
   double gap_us = 100;                  // the second input is armed this long after the start
 };
 
-std::string describe(const Split& s) {
+std::string describe_split(const Split& s) {
   return std::string(t800::to_string(s.protocol)) + ", " +
          std::string(t800::to_string(s.fidelity)) + (s.packet_runs ? "" : " (no runs)") + ", " +
          std::to_string(s.bytes) + " bytes taken " + std::to_string(s.first) +
@@ -100,13 +100,13 @@ TEST(LinkPieces, TheSenderWaitsAfterTheBytesAnInputTakesUntilTheNextInput) {
       for (std::int64_t first : {1, 2, 10, 38, 39}) {
         Split s{protocol, fidelity, runs, 40, first, 100};
         const PieceValues v = core_test::in_child<kPieceValues>([&] { return split(s); });
-        ASSERT_EQ(v[7], 0) << describe(s) << ": deadlocked";
-        ASSERT_GE(v[3], 0) << describe(s) << ": did not finish";
-        EXPECT_EQ(v[2], double(first)) << describe(s);
-        EXPECT_EQ(v[4], double(s.bytes - first)) << describe(s);
-        EXPECT_EQ(v[5], 0) << describe(s) << ": the message should be all taken";
+        ASSERT_EQ(v[7], 0) << describe_split(s) << ": deadlocked";
+        ASSERT_GE(v[3], 0) << describe_split(s) << ": did not finish";
+        EXPECT_EQ(v[2], double(first)) << describe_split(s);
+        EXPECT_EQ(v[4], double(s.bytes - first)) << describe_split(s);
+        EXPECT_EQ(v[5], 0) << describe_split(s) << ": the message should be all taken";
         // The first input has its bytes when its last has arrived.
-        EXPECT_NEAR(v[1], r.byte_start(0, first) + r.data, 1e-6) << describe(s);
+        EXPECT_NEAR(v[1], r.byte_start(0, first) + r.data, 1e-6) << describe_split(s);
         // Byte first + 1 found no input and is acknowledged when the second is armed; from then
         // on the bytes stream as in any message whose input was armed late.
         const double resumed = s.gap_us + r.ack + r.process;  // byte first + 2 starts
@@ -114,8 +114,8 @@ TEST(LinkPieces, TheSenderWaitsAfterTheBytesAnInputTakesUntilTheNextInput) {
         const double last_start =
             after == 0 ? r.byte_start(0, first + 1) : resumed + double(after - 1) * r.period;
         const double last_ack = after == 0 ? s.gap_us : last_start + r.detect;
-        EXPECT_NEAR(v[0], last_ack + r.ack, 1e-6) << describe(s) << ": sender";
-        EXPECT_NEAR(v[3], std::max(last_start + r.data, s.gap_us), 1e-6) << describe(s);
+        EXPECT_NEAR(v[0], last_ack + r.ack, 1e-6) << describe_split(s) << ": sender";
+        EXPECT_NEAR(v[3], std::max(last_start + r.data, s.gap_us), 1e-6) << describe_split(s);
       }
   }
 }

@@ -16,7 +16,10 @@
 //              yet): a polynomial by Horner's rule, shifts by counts from data, bitwise
 //              operations, / and \ of negative operands, a count under an IF in the loop, a
 //              product of products that needs the integer stack three deep on both sides, and
-//              REAL work on converted INTs (REALn ROUND, INT ROUND, INT TRUNC);
+//              REAL work on converted INTs (REALn ROUND, INT ROUND, INT TRUNC); subscripts the
+//              kernel computes (t800sim::at): a gather and scatter through a permutation, an FFT
+//              butterfly's strided elements, INT elements stored through subscripts that need
+//              the whole stack, and a subscript read through two arrays;
 //   SDK        LOOP7 (programs/livermore), BLOCK.MAC (programs/systolic), TRACE.LINE
 //              (programs/raytrace), SUM (examples/sumfarm), recorded as those programs record them.
 // Each in REAL32 and REAL64, compiled checked and unchecked, run with everything on chip and with
@@ -107,6 +110,16 @@ std::int64_t int_operation(NodeKind kind, std::int64_t a, std::int64_t b) {
   }
 }
 
+// The element an access reaches: its recorded index, or, for a subscript the kernel computed, the
+// subscript's replayed value -- which must be the recorded index (else past the end: an error).
+std::size_t replayed_index(const Recording& r, const t800::codegen::Access& access,
+                           const std::vector<double>& value) {
+  if (access.subscript < 0) return std::size_t(access.index);
+  const double k = value[std::size_t(access.subscript)];
+  return k == double(access.index) ? std::size_t(k)
+                                   : std::size_t(r.arrays()[std::size_t(access.array)].length);
+}
+
 // Every node's value is kept as a double: a REAL of precision T (computed in T), or an INT.
 template <class T>
 Replay replay_as(const Recording& r, const Values& inputs) {
@@ -135,7 +148,12 @@ Replay replay_as(const Recording& r, const Values& inputs) {
           break;
         case NodeKind::load: {
           const auto& acc = r.accesses()[std::size_t(n.access)];
-          const auto& element = state[std::size_t(acc.array)][std::size_t(acc.index)];
+          const std::size_t index = replayed_index(r, acc, value);
+          if (index >= state[std::size_t(acc.array)].size()) {
+            out.error = "a computed subscript replays to another element";
+            return out;
+          }
+          const auto& element = state[std::size_t(acc.array)][index];
           if (!element) {
             out.error = "element " + std::to_string(acc.index) + " of " +
                         r.arrays()[std::size_t(acc.array)].name + " is read before it has a value";
@@ -199,7 +217,12 @@ Replay replay_as(const Recording& r, const Values& inputs) {
       }
     } else if (e.kind == EventKind::store) {
       const auto& acc = r.accesses()[std::size_t(e.access)];
-      state[std::size_t(acc.array)][std::size_t(acc.index)] = value[std::size_t(e.node)];
+      const std::size_t index = replayed_index(r, acc, value);
+      if (index >= state[std::size_t(acc.array)].size()) {
+        out.error = "a computed subscript replays to another element";
+        return out;
+      }
+      state[std::size_t(acc.array)][index] = value[std::size_t(e.node)];
     } else if (e.kind == EventKind::test && truth[std::size_t(e.node)] != e.taken) {
       out.error = "a recorded test replays the other way";
       return out;
@@ -695,6 +718,62 @@ void int_kernels(std::vector<Kernel>& out) {
       for (std::size_t i : t800sim::seq<Int>(a.size()))
         z[i] = (a[i] * b[i] + c[i] * d[i]) - (a[i] * d[i] - b[i] * c[i]);
       k.outputs[4] = values_of(z);
+    });
+  }
+  // Subscripts the kernel computes (t800sim::at): read from data, strided, stored through.
+  add("GATHER.SCATTER" + precision, [&](Kernel& k) {
+    // y[p[i]] := y[p[i]] + (a * x[p[(i + 1) \ n]]), p a permutation
+    auto p = ints({3, 0, 4, 1, 2});
+    std::vector<S> x{S(T(0.5)), S(T(-1.25)), S(T(3.0)), S(T(0.125)), S(T(7.5))}, y = x;
+    S a = T(1.5);
+    Int n = 5;
+    t800sim::declare(p, "p");
+    t800sim::declare(x, "x");
+    t800sim::declare(y, "y");
+    t800sim::declare_variable(a, "a");
+    t800sim::declare_variable(n, "n");
+    k.inputs = {values_of(p), values_of(x), values_of(y), {double(a.value())}, {double(n.value())}};
+    for (std::size_t i : t800sim::seq<S>(p.size())) {
+      const Int next = (Int(std::int32_t(i)) + Int(1)) % n;
+      t800sim::at(y, p[i]) = t800sim::at(y, p[i]) + a * t800sim::at(x, t800sim::at(p, next));
+    }
+    k.outputs[2] = values_of(y);
+  });
+  add("BUTTERFLY" + precision, [&](Kernel& k) {
+    // t := w * re[(j * s) + h]; re[(j * s) + h] := re[j * s] - t; re[j * s] := re[j * s] + t
+    std::vector<S> re;
+    for (int i = 0; i < 8; ++i) re.push_back(S(T(0.25 * i - 1.0)));
+    S w = T(0.75);
+    Int s = 2, h = 1;
+    t800sim::declare(re, "re");
+    t800sim::declare_variable(w, "w");
+    t800sim::declare_variable(s, "s");
+    t800sim::declare_variable(h, "h");
+    k.inputs = {values_of(re), {double(w.value())}, {double(s.value())}, {double(h.value())}};
+    for (std::size_t j : t800sim::seq<S>(4)) {
+      const Int base = Int(std::int32_t(j)) * s;
+      const S t = w * t800sim::at(re, base + h);
+      t800sim::at(re, base + h) = t800sim::at(re, base) - t;
+      t800sim::at(re, base) = t800sim::at(re, base) + t;
+    }
+    k.outputs[0] = values_of(re);
+  });
+  if (!real64) {
+    add("PERMUTE", [&](Kernel& k) {
+      // z[(d[i] * b[i]) - (c[i] * b[i])] := (a[i] * b[i]) - (c[i] * a[i]); y[x[x[i]]] := i
+      auto a = ints({1, 2, 3}), b = ints({2, 1, 3}), c = ints({3, 1, 1}), d = ints({4, 3, 2}),
+           z = ints({0, 0, 0, 0, 0, 0, 0}), x = ints({2, 0, 1}), y = ints({0, 0, 0});
+      const std::vector<std::pair<std::vector<Int>*, const char*>> arrays{
+          {&a, "a"}, {&b, "b"}, {&c, "c"}, {&d, "d"}, {&z, "z"}, {&x, "x"}, {&y, "y"}};
+      for (const auto& [v, name] : arrays) t800sim::declare(*v, name);
+      k.inputs = {values_of(a), values_of(b), values_of(c), values_of(d),
+                  values_of(z), values_of(x), values_of(y)};
+      for (std::size_t i : t800sim::seq<Int>(a.size())) {
+        t800sim::at(z, d[i] * b[i] - c[i] * b[i]) = a[i] * b[i] - c[i] * a[i];
+        t800sim::at(y, t800sim::at(x, x[i])) = Int(std::int32_t(i));
+      }
+      k.outputs[4] = values_of(z);
+      k.outputs[6] = values_of(y);
     });
   }
   add("CONVERT" + precision, [&](Kernel& k) {

@@ -101,7 +101,7 @@ void expect_exact(const Rounds& r) {
 }
 
 // Each round, every task ran exactly once.
-void expect_each_task_once(const Rounds& r) {
+void expect_each_task_once_a_round(const Rounds& r) {
   for (const auto& round : r.done_by) {
     std::multiset<int> done;
     for (const auto& tasks : round) done.insert(tasks.begin(), tasks.end());
@@ -123,7 +123,7 @@ TEST_P(ToyFarmSchedules, EveryRoundGivesTheClosedFormSums) {
   const Rounds r = run_toy(with(GetParam()));
   ASSERT_TRUE(r.blocked.empty());
   expect_exact(r);
-  expect_each_task_once(r);
+  expect_each_task_once_a_round(r);
   for (const FarmRoundTiming& t : r.timing) {
     EXPECT_GT(t.end_us, t.start_us);
     ASSERT_EQ(t.busy_us.size(), 5u);
@@ -157,7 +157,7 @@ TEST_P(ToyFarmOnDemand, EveryRoundGivesTheClosedFormSums) {
   const Rounds r = run_toy(o);
   ASSERT_TRUE(r.blocked.empty());
   expect_exact(r);
-  expect_each_task_once(r);
+  expect_each_task_once_a_round(r);
 }
 
 INSTANTIATE_TEST_SUITE_P(AltBufferedLongestFirst, ToyFarmOnDemand,
@@ -230,7 +230,7 @@ TEST(ToyFarm, RecoveryReassignsAHaltedWorkersTasks) {
   halt.at_us = 0;
   const Rounds r = run_toy(o, {halt});
   expect_exact(r);
-  expect_each_task_once(r);
+  expect_each_task_once_a_round(r);
   EXPECT_EQ(r.lost, (std::vector<std::string>{"P2", "P5"}));
   // Only the lost subtree's workers are left waiting: P2's, halted, and P5's, cut off by it.
   for (const auto& b : r.blocked)

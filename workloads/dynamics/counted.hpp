@@ -101,6 +101,17 @@ class Counted {
     serial_ = current_serial();
   }
 
+  // For subscripts the kernel computes (occam/subscript.hpp). The access of the declared element
+  // this is, or -1; whether it is an element of recording r's.
+  int home() const { return home_; }
+  bool belongs_to(const Recording& r) const { return serial_ == r.serial(); }
+  // The node holding x in recording r: x's own, a load when x is a declared element (x is taken by
+  // value: the copy loads it), a constant for a literal; a KernelError for another recording's.
+  static int node_of(Recording& r, Counted x) { return operand(r, x); }
+  // Sets the value alone, recording nothing: it was stored through a view of this element whose
+  // subscript the kernel computed, and that store was recorded.
+  void set_value_unrecorded(T v) { v_ = v; }
+
   friend Counted operator+(Counted a, Counted b) {
     if constexpr (kInt) return integer(NodeKind::add, a, b);
     return count(&OpCounts::fadd, a.v_ + b.v_, NodeKind::add, a, b);
