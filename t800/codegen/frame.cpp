@@ -4,6 +4,11 @@
 
 namespace t800::codegen {
 
+std::string loop_index_name(int depth) {
+  static const char* names[] = {"i", "j", "k", "l", "m", "n"};
+  return depth < 6 ? names[depth] : "i" + std::to_string(depth);
+}
+
 Frame::Frame(const Recording& recording) {
   int depth = 0;
   for (const Event& e : recording.events()) {

@@ -6,11 +6,15 @@
 // overlap share a word, as the compiler overlays the workspace of scopes that do not overlap.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "t800/codegen/recording.hpp"
 
 namespace t800::codegen {
+
+// A loop's index as listings name it: i, j, k, ... by nesting depth.
+std::string loop_index_name(int depth);
 
 class Frame {
  public:

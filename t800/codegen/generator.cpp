@@ -173,7 +173,8 @@ class Generator : public EmitSink {
       if (a.subscript >= 0) {
         integers_.evaluate(a.subscript);
       } else {
-        emit({Op::ldl, frame_.loop_index(s.depth), 0, false, workspace(), index_name(s.depth)});
+        emit(
+            {Op::ldl, frame_.loop_index(s.depth), 0, false, workspace(), loop_index_name(s.depth)});
         if (s.offset != 0) emit({Op::adc, s.offset, 0, false, {}, element});
       }
       if (target_.checked) {
@@ -211,14 +212,10 @@ class Generator : public EmitSink {
  private:
   static MemoryRef workspace() { return {Region::workspace, -1}; }
 
-  static std::string index_name(int depth) {
-    static const char* names[] = {"i", "j", "k", "l", "m", "n"};
-    return depth < 6 ? names[depth] : "i" + std::to_string(depth);
-  }
   static std::string subscript_text(const Subscript& s) {
     if (!s.by_loop) return std::to_string(s.offset);
-    if (s.offset == 0) return index_name(s.depth);
-    return index_name(s.depth) + (s.offset > 0 ? "+" : "") + std::to_string(s.offset);
+    if (s.offset == 0) return loop_index_name(s.depth);
+    return loop_index_name(s.depth) + (s.offset > 0 ? "+" : "") + std::to_string(s.offset);
   }
 
   // The caller passes the arrays' addresses (three in registers, the rest in its workspace) and
@@ -299,7 +296,7 @@ class Generator : public EmitSink {
     if (loops_.empty()) return r_.name();
     std::string text = r_.name();
     for (const OpenLoop& l : loops_)
-      text += ", SEQ " + index_name(l.depth) + " iteration " +
+      text += ", SEQ " + loop_index_name(l.depth) + " iteration " +
               std::to_string(l.shape.first + l.iteration);
     return text;
   }
@@ -371,7 +368,7 @@ class Generator : public EmitSink {
     l.depth = int(loops_.size());
     l.shape = shapes_.at(event_index);
     const int control = frame_.loop_index(l.depth);
-    const std::string name = "SEQ " + index_name(l.depth);
+    const std::string name = "SEQ " + loop_index_name(l.depth);
     emit({Op::ldc, l.shape.first, 0, false, {}, name + ": first index"});
     emit({Op::stl, control, 0, false, workspace(), name});
     emit({Op::ldc, l.shape.count, 0, false, {}, name + ": count"});
@@ -389,7 +386,7 @@ class Generator : public EmitSink {
       Body& b = bodies_.back();
       const int control = frame_.loop_index(l.depth);
       const bool looping = l.iteration + 1 < l.shape.count;
-      emit({Op::ldlp, control, 0, false, {}, "SEQ " + index_name(l.depth) + ": end"});
+      emit({Op::ldlp, control, 0, false, {}, "SEQ " + loop_index_name(l.depth) + ": end"});
       // lend jumps back from its successor by A: the body so far, this ldc (whose length
       // depends on its own operand) and lend itself.
       const int lend_bytes = isa::encoded_bytes(Op::lend);
@@ -423,7 +420,7 @@ class Generator : public EmitSink {
   void flush_group(OpenLoop& l) {
     if (l.group_size == 0) return;
     Body& parent = bodies_[bodies_.size() - 2];
-    const std::string range = "SEQ " + index_name(l.depth) + " iterations " +
+    const std::string range = "SEQ " + loop_index_name(l.depth) + " iterations " +
                               std::to_string(l.group_first) + ".." +
                               std::to_string(l.group_first + l.group_size - 1);
     for (CodeRun& run : l.group) {

@@ -87,6 +87,7 @@ std::string IntegerEmitter::describe(int n) const {
   if (temporary(n)) return "t" + std::to_string(n);
   if (node.kind == NodeKind::load) return sink_.element(node.access);
   if (node.kind == NodeKind::constant) return std::to_string(std::int64_t(node.value));
+  if (node.kind == NodeKind::loop_index) return loop_index_name(node.depth);
   return "(...)";
 }
 
@@ -94,11 +95,12 @@ bool IntegerEmitter::constant(int n) const {
   return r_.nodes()[std::size_t(n)].kind == NodeKind::constant && !temporary(n);
 }
 
-// Loaded by one instruction from where it is (occ21's "addressable"): a variable, a temporary, an
-// element with a constant subscript.
+// Loaded by one instruction from where it is (occ21's "addressable"): a variable, a temporary, a
+// loop's index, an element with a constant subscript.
 bool IntegerEmitter::addressable(int n) const {
   const Node& node = r_.nodes()[std::size_t(n)];
-  return temporary(n) || (node.kind == NodeKind::load && sink_.address_need(node.access) == 1);
+  return temporary(n) || node.kind == NodeKind::loop_index ||
+         (node.kind == NodeKind::load && sink_.address_need(node.access) == 1);
 }
 
 // The registers an operand takes: a shift's count checked against 33 (ldc 33; csub0) takes one
@@ -160,7 +162,8 @@ IntegerEmitter::Plan IntegerEmitter::plan(int n) {
 
 int IntegerEmitter::need(int n) {
   const Node& node = r_.nodes()[std::size_t(n)];
-  if (temporary(n) || node.kind == NodeKind::constant) return 1;
+  if (temporary(n) || node.kind == NodeKind::constant || node.kind == NodeKind::loop_index)
+    return 1;
   if (node.kind == NodeKind::load) return sink_.address_need(node.access);
   if (node.kind == NodeKind::bit_not) return need(node.a);
   return plan(n).need;
@@ -182,6 +185,9 @@ void IntegerEmitter::expand(int n) {
       return;
     case NodeKind::load:
       sink_.load_word(node.access);
+      return;
+    case NodeKind::loop_index:
+      emit(Op::ldl, frame_.loop_index(node.depth), describe(n));
       return;
     case NodeKind::bit_not:
       value(node.a);
@@ -369,6 +375,10 @@ int IntegerEmitter::push_address(int n) {
   }
   if (node.kind == NodeKind::load) {
     sink_.address(node.access);
+    return -1;
+  }
+  if (node.kind == NodeKind::loop_index) {
+    emit(Op::ldlp, frame_.loop_index(node.depth), describe(n));
     return -1;
   }
   expand(n);

@@ -31,7 +31,7 @@ bool is_conversion_to_int(NodeKind kind) {
 }
 
 bool is_leaf(NodeKind kind) {
-  return kind == NodeKind::constant || kind == NodeKind::load;
+  return kind == NodeKind::constant || kind == NodeKind::load || kind == NodeKind::loop_index;
 }
 
 bool is_commutative(NodeKind kind) {
@@ -126,7 +126,6 @@ int Recording::subscripted(int array, int subscript, std::int64_t index) {
   return add_access({array, index, subscript});
 }
 
-// Every load and store has an access of its own (the generator classifies each use).
 int Recording::add_access(const Access& access) {
   accesses_.push_back(access);
   return int(accesses_.size()) - 1;
@@ -245,11 +244,13 @@ void Recording::loop_begin() {
   e.kind = EventKind::loop_begin;
   add_event(e);
   open_blocks_.push_back(-1);  // no iteration open yet
+  loop_indices_.push_back(0);
 }
 
 void Recording::iteration(std::int64_t index) {
   if (open_blocks_.size() < 2) throw std::logic_error("Recording::iteration outside a loop");
   open_blocks_.back() = next_block_++;
+  loop_indices_.back() = index;
   Event e;
   e.kind = EventKind::iteration;
   e.index = index;
@@ -259,9 +260,21 @@ void Recording::iteration(std::int64_t index) {
 void Recording::loop_end() {
   if (open_blocks_.size() < 2) throw std::logic_error("Recording::loop_end outside a loop");
   open_blocks_.pop_back();
+  loop_indices_.pop_back();
   Event e;
   e.kind = EventKind::loop_end;
   add_event(e);
+}
+
+int Recording::loop_index(int depth) {
+  if (depth < 0 || depth >= loop_depth())
+    throw std::logic_error("Recording::loop_index: no SEQ open at that depth");
+  Node n;
+  n.kind = NodeKind::loop_index;
+  n.integer = true;
+  n.depth = depth;
+  n.value = double(loop_indices_[std::size_t(depth)]);
+  return add_node(n);
 }
 
 }  // namespace t800::codegen

@@ -45,9 +45,12 @@ enum class NodeKind : std::uint8_t {
   to_real,
   int_round,
   int_trunc,
+  // The index of an enclosing replicated SEQ (Node::depth says which), an INT: its value is the
+  // iteration's, its code the same in every iteration (ldl of the loop's control block).
+  loop_index,
 };
 bool is_comparison(NodeKind kind);
-// A constant or a load: a value that is not computed.
+// A constant, a load or a loop's index: a value that is not computed.
 bool is_leaf(NodeKind kind);
 bool is_routine(NodeKind kind);
 // The value is an INT computed by the REAL arithmetic (INT ROUND/TRUNC): a local variable always,
@@ -79,6 +82,7 @@ struct Node {
   int access = -1;     // load: index into Recording::accesses()
   double value = 0;    // a constant's; an INT node's value as the run computed it
   int block = 0;       // the block (straight-line code or one loop iteration) it was computed in
+  int depth = -1;      // loop_index: the nesting depth of its SEQ (0 = outermost)
 };
 
 // How an array is held (compiler writer's guide, "vectors"): through a pointer in a workspace word
@@ -184,6 +188,9 @@ class Recording {
   void loop_begin();
   void iteration(std::int64_t index);
   void loop_end();
+  // The open SEQs, and the index of the one at `depth` as an INT node (its value this iteration).
+  int loop_depth() const { return int(loop_indices_.size()); }
+  int loop_index(int depth);
 
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<Event>& events() const { return events_; }
@@ -208,7 +215,8 @@ class Recording {
   std::vector<Event> events_;
   std::vector<Access> accesses_;
   std::vector<ArrayDecl> arrays_;
-  std::vector<int> open_blocks_{0};  // the block being recorded, innermost last
+  std::vector<int> open_blocks_{0};         // the block being recorded, innermost last
+  std::vector<std::int64_t> loop_indices_;  // each open SEQ's index this iteration, innermost last
   int next_block_ = 1;
 };
 

@@ -216,4 +216,36 @@ TEST(GeneratedIntegerCode, AConstantSubscriptIsTheElement) {
   EXPECT_EQ(body_code(u), (Seq{"ldl 11", "ldnl 5", "ldl 2", "add", "ldl 10", "stnl 0"}));
 }
 
+// The loop's index as an Int (for (Int i : seq(n))) is the loop's index in the code: `ldl i`, the
+// same in every iteration, so the iterations compile to one body, as occam's SEQ i = 0 FOR n does.
+// at(x, i) is then the element the loop-indexed subscript x[i] is, in the same code.
+TEST(GeneratedIntegerCode, TheLoopsIndexAsAnIntIsTheSameCodeInEveryIteration) {
+  const CodeUnit by_int =
+      compile_int([](Int& a, auto&, auto&, auto&, auto&, auto&, auto&, auto&, auto& x, auto& y) {
+        for (Int i : occam::seq<Int>(8)) occam::at(x, i) = occam::at(y, i) + a;
+      });
+  const CodeUnit by_index =
+      compile_int([](Int& a, auto&, auto&, auto&, auto&, auto&, auto&, auto&, auto& x, auto& y) {
+        for (std::size_t i : occam::seq<Int>(8)) x[i] = y[i] + a;
+      });
+  EXPECT_EQ(body_code(by_int), body_code(by_index));
+  EXPECT_EQ(by_int.code_bytes, by_index.code_bytes);
+  const auto strided = [](int n) {
+    return compile_int([n](Int&, Int& b, auto&, auto&, auto&, auto&, auto&, auto&, auto& x, auto&) {
+      for (Int i : occam::seq<Int>(std::size_t(n))) occam::at(x, i * Int(2)) = b + i;
+    });
+  };
+  // In memory once whatever the count: ldc 3 and ldc 4 are one byte each.
+  EXPECT_EQ(strided(3).code_bytes, strided(4).code_bytes);
+  // SEQ i = 0 FOR 2: ldc 0; stl 0; ldc 2; stl 1 (the control block in words 0 and 1, so the
+  // variables from word 4 and x's pointer in word 12); then x[i * 2] := b + i; ldlp 0; ldc; lend.
+  const Seq code = body_code(strided(2));
+  ASSERT_EQ(code.size(), 4u + 2u * (11u + 3u));
+  const Seq body{"ldl 5", "ldl 0", "add",    "ldl 0", "dup",   "add",
+                 "ldc 8", "csub0", "ldl 12", "wsub",  "stnl 0"};
+  EXPECT_EQ(Seq(code.begin() + 4, code.begin() + 15), body);
+  EXPECT_EQ(Seq(code.begin() + 18, code.begin() + 29), body);
+  EXPECT_EQ(code.back(), "lend");
+}
+
 }  // namespace

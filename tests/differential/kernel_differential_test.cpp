@@ -168,6 +168,9 @@ Replay replay_as(const Recording& r, const Values& inputs) {
         case NodeKind::equal:
           truth[std::size_t(e.node)] = int_operands ? (da == db) != n.inverted : a == b;
           break;
+        case NodeKind::loop_index:  // the iteration's index, as recorded
+          v = n.value;
+          break;
         case NodeKind::to_real:
           v = double(T(da));  // an INT is exact in a double; T rounds it to nearest
           break;
@@ -750,8 +753,8 @@ void int_kernels(std::vector<Kernel>& out) {
     t800sim::declare_variable(s, "s");
     t800sim::declare_variable(h, "h");
     k.inputs = {values_of(re), {double(w.value())}, {double(s.value())}, {double(h.value())}};
-    for (std::size_t j : t800sim::seq<S>(4)) {
-      const Int base = Int(std::int32_t(j)) * s;
+    for (Int j : t800sim::seq<S>(4)) {
+      const Int base = j * s;
       const S t = w * t800sim::at(re, base + h);
       t800sim::at(re, base + h) = t800sim::at(re, base) - t;
       t800sim::at(re, base) = t800sim::at(re, base) + t;

@@ -108,6 +108,12 @@ class Counted {
   // The node holding x in recording r: x's own, a load when x is a declared element (x is taken by
   // value: the copy loads it), a constant for a literal; a KernelError for another recording's.
   static int node_of(Recording& r, Counted x) { return operand(r, x); }
+  // The value the active recording holds at INT node `node` (a loop's index, occam/structure.hpp).
+  static Counted recorded(T v, int node) {
+    Counted c(v);
+    c.node_ = node;
+    return c;
+  }
   // Sets the value alone, recording nothing: it was stored through a view of this element whose
   // subscript the kernel computed, and that store was recorded.
   void set_value_unrecorded(T v) { v_ = v; }

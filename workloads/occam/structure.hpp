@@ -42,6 +42,10 @@ class LoopTally {
 };
 
 // SEQ i = first FOR count, as a C++ range: each iteration begins when the loop variable is read.
+// The variable is a std::size_t (for x[i]), or an INT (dynamics::CountedInt, t800sim::Int) that the
+// recording holds as the loop's index, so that what is computed from it (at(x, 2 * i), a
+// conversion to REAL) is the same code in every iteration:
+//   for (std::size_t i : seq<S>(n)) ...       for (Int i : seq<S>(n)) at(re, i * s) = ...
 template <class S>
 class Seq {
   static constexpr bool kInstrumented = dynamics::is_counted_v<S>;
@@ -50,7 +54,10 @@ class Seq {
   Seq(std::size_t first, std::size_t count) : first_(first), count_(count) {
     if constexpr (kInstrumented) {
       if (LoopTally* t = LoopTally::current()) t->loop();
-      if (auto* r = t800::codegen::Recording::current()) r->loop_begin();
+      if (auto* r = t800::codegen::Recording::current()) {
+        r->loop_begin();
+        depth_ = r->loop_depth() - 1;
+      }
     }
   }
   ~Seq() {
@@ -61,15 +68,35 @@ class Seq {
   Seq(const Seq&) = delete;
   Seq& operator=(const Seq&) = delete;
 
+  // One iteration's value of the loop's variable.
+  class Index {
+   public:
+    Index(std::size_t i, int depth) : i_(i), depth_(depth) {}
+    operator std::size_t() const { return i_; }  // NOLINT(google-explicit-constructor)
+    operator dynamics::CountedInt() const {      // NOLINT(google-explicit-constructor)
+      const auto i = std::int32_t(i_);
+      if constexpr (kInstrumented) {
+        auto* r = t800::codegen::Recording::current();
+        if (r && depth_ >= 0 && depth_ < r->loop_depth())
+          return dynamics::CountedInt::recorded(i, r->loop_index(depth_));
+      }
+      return dynamics::CountedInt(i);
+    }
+
+   private:
+    std::size_t i_;
+    int depth_;
+  };
+
   class iterator {
    public:
-    explicit iterator(std::size_t i) : i_(i) {}
-    std::size_t operator*() const {
+    iterator(std::size_t i, int depth) : i_(i), depth_(depth) {}
+    Index operator*() const {
       if constexpr (kInstrumented) {
         if (LoopTally* t = LoopTally::current()) t->iteration();
         if (auto* r = t800::codegen::Recording::current()) r->iteration(std::int64_t(i_));
       }
-      return i_;
+      return Index(i_, depth_);
     }
     iterator& operator++() {
       ++i_;
@@ -79,12 +106,14 @@ class Seq {
 
    private:
     std::size_t i_;
+    int depth_;
   };
-  iterator begin() const { return iterator(first_); }
-  iterator end() const { return iterator(first_ + count_); }
+  iterator begin() const { return iterator(first_, depth_); }
+  iterator end() const { return iterator(first_ + count_, depth_); }
 
  private:
   std::size_t first_, count_;
+  int depth_ = -1;  // in the recording, when one is active
 };
 
 template <class S>
