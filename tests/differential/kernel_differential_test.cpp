@@ -134,6 +134,14 @@ Replay replay_as(const Recording& r, const Values& inputs) {
   }
   std::vector<double> value(r.nodes().size(), 0.0);
   std::vector<bool> truth(r.nodes().size(), false);
+  // The element an access reaches, or nullptr (and the error) for a subscript replayed elsewhere.
+  const auto element_of = [&](const t800::codegen::Access& access) -> std::optional<double>* {
+    auto& elements = state[std::size_t(access.array)];
+    const std::size_t index = replayed_index(r, access, value);
+    if (index < elements.size()) return &elements[index];
+    out.error = "a computed subscript replays to another element";
+    return nullptr;
+  };
   for (const auto& e : r.events()) {
     if (e.kind == EventKind::value) {
       const auto& n = r.nodes()[std::size_t(e.node)];
@@ -148,12 +156,9 @@ Replay replay_as(const Recording& r, const Values& inputs) {
           break;
         case NodeKind::load: {
           const auto& acc = r.accesses()[std::size_t(n.access)];
-          const std::size_t index = replayed_index(r, acc, value);
-          if (index >= state[std::size_t(acc.array)].size()) {
-            out.error = "a computed subscript replays to another element";
-            return out;
-          }
-          const auto& element = state[std::size_t(acc.array)][index];
+          const auto* slot = element_of(acc);
+          if (!slot) return out;
+          const auto& element = *slot;
           if (!element) {
             out.error = "element " + std::to_string(acc.index) + " of " +
                         r.arrays()[std::size_t(acc.array)].name + " is read before it has a value";
@@ -219,13 +224,9 @@ Replay replay_as(const Recording& r, const Values& inputs) {
           }
       }
     } else if (e.kind == EventKind::store) {
-      const auto& acc = r.accesses()[std::size_t(e.access)];
-      const std::size_t index = replayed_index(r, acc, value);
-      if (index >= state[std::size_t(acc.array)].size()) {
-        out.error = "a computed subscript replays to another element";
-        return out;
-      }
-      state[std::size_t(acc.array)][index] = value[std::size_t(e.node)];
+      auto* slot = element_of(r.accesses()[std::size_t(e.access)]);
+      if (!slot) return out;
+      *slot = value[std::size_t(e.node)];
     } else if (e.kind == EventKind::test && truth[std::size_t(e.node)] != e.taken) {
       out.error = "a recorded test replays the other way";
       return out;
