@@ -18,6 +18,9 @@ struct CodeRun {
   isa::Sequence code;
   std::int64_t times = 1;
   bool library = false;  // the run-time library's code (fetched from its memory, not the unit's)
+  // >= 0: the run ends with a SEQ's set-up (its control block, its count's test), and the SEQ
+  // runs this many iterations, whose runs follow.
+  std::int64_t seq_iterations = -1;
 };
 
 struct CodeUnit {

@@ -24,6 +24,8 @@ Dataflow::Dataflow(const Recording& recording) : r_(recording) {
   for (const Event& e : r_.events()) {
     if (e.kind == EventKind::store || e.kind == EventKind::test) use(e.node, e.block);
     if (e.kind == EventKind::store && subscript(e.access) >= 0) use(subscript(e.access), e.block);
+    for (int bound : loop_bounds(e))
+      if (bound >= 0) use(bound, e.block);
   }
   while (!stack.empty()) {
     const Node& node = nodes[std::size_t(stack.back())];
@@ -50,7 +52,8 @@ Dataflow::Dataflow(const Recording& recording) : r_(recording) {
     int root = -1, defining = -1;
     if (e.kind == EventKind::store || e.kind == EventKind::test) root = e.node;
     if (e.kind == EventKind::value && temporary(e.node)) root = defining = e.node;
-    if (root < 0) continue;
+    const std::array<int, 2> bounds = loop_bounds(e);
+    if (root < 0 && bounds[0] < 0 && bounds[1] < 0) continue;
     std::vector<int> walk;
     auto visit = [&](int x) {
       if (x < 0) return;
@@ -63,6 +66,7 @@ Dataflow::Dataflow(const Recording& recording) : r_(recording) {
     };
     visit(root);
     if (e.kind == EventKind::store) visit(subscript(e.access));
+    for (int bound : bounds) visit(bound);
     while (!walk.empty()) {
       const Node& node = nodes[std::size_t(walk.back())];
       walk.pop_back();
@@ -77,6 +81,12 @@ Dataflow::Dataflow(const Recording& recording) : r_(recording) {
 
 int Dataflow::subscript(int access) const {
   return r_.accesses()[std::size_t(access)].subscript;
+}
+
+std::array<int, 2> Dataflow::loop_bounds(const Event& e) const {
+  if (e.kind != EventKind::loop_begin) return {-1, -1};
+  const LoopBounds& b = r_.loop_bounds()[std::size_t(e.index)];
+  return {b.first, b.count};
 }
 
 int Dataflow::through(int n) const {

@@ -5,6 +5,7 @@
 // the REAL and INT expression emitters (expression.hpp, integer_expression.hpp) share one.
 #pragma once
 
+#include <array>
 #include <map>
 #include <vector>
 
@@ -27,6 +28,8 @@ class Dataflow {
   int through(int n) const;
   // The INT node an access's subscript is computed from (t800sim::at), or -1.
   int subscript(int access) const;
+  // A SEQ's first index and count, where the kernel computes them (INT nodes, else -1).
+  std::array<int, 2> loop_bounds(const Event& e) const;
   // Whether REAL constants other than 0.0 are read (the PROC then points at its constant table).
   bool uses_real_constants() const { return uses_real_constants_; }
 

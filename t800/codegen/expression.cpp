@@ -268,11 +268,18 @@ void ExpressionEmitter::load(int n) {
     operation(real64_ ? Op::fpldzerodb : Op::fpldzerosn, "0.0");
     return;
   }
-  leaf_address(n);
   Instruction in;
-  in.op = real64_ ? Op::fpldnldb : Op::fpldnlsn;
   in.data = leaf_memory(r_, node, temporary(n));
   in.note = "load " + describe(n);
+  // An element with a computed subscript is loaded by the indexed load, which scales the
+  // subscript itself (oc: ldl i; ldl x; fpldnldbi, where a load-and-operate takes wsubdb first).
+  if (!temporary(n) && node.kind == NodeKind::load && sink_.subscript_and_base(node.access)) {
+    in.op = real64_ ? Op::fpldnldbi : Op::fpldnlsni;
+    sink_.emit(in);
+    return;
+  }
+  leaf_address(n);
+  in.op = real64_ ? Op::fpldnldb : Op::fpldnlsn;
   sink_.emit(in);
 }
 

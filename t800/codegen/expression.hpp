@@ -28,6 +28,10 @@ class EmitSink {
   virtual void call(const CodeUnit& routine) = 0;
   // The address of a recorded array element on the integer stack.
   virtual void address(int access) = 0;
+  // For the indexed loads (fpldnlsni, fpldnldbi): an element with a computed subscript as that
+  // subscript, checked, in B and its array's base in A, returning true; for an element with a
+  // constant subscript, false, emitting nothing (address() is its address).
+  virtual bool subscript_and_base(int access) = 0;
   // Registers an element's address takes on the integer stack (1 for a constant subscript, 2 for
   // the loop's index, as many as a subscript the kernel computed needs, at least 2), and an INT
   // element loaded to, or stored from, A.

@@ -56,9 +56,9 @@ struct Body {
   // What the loops inside occupy beyond that: their largest iteration's code less their last's.
   int extra_bytes = 0;
   int footprint() const { return static_bytes + extra_bytes; }  // its code in memory
-  void flush(const std::string& label) {
+  void flush(const std::string& label, std::int64_t seq_iterations = -1) {
     if (open.empty()) return;
-    runs.push_back({label, std::move(open), 1});
+    runs.push_back({label, std::move(open), 1, false, seq_iterations});
     open.clear();
   }
 };
@@ -74,6 +74,7 @@ bool same_code(const std::vector<CodeRun>& a, const std::vector<CodeRun>& b) {
           !(x.data == y.data))
         return false;
     }
+    if (a[i].seq_iterations != b[i].seq_iterations) return false;
   }
   return true;
 }
@@ -82,7 +83,9 @@ bool same_code(const std::vector<CodeRun>& a, const std::vector<CodeRun>& b) {
 // runs of identical code.
 struct OpenLoop {
   int depth = 0;
+  std::size_t begin_event = 0;
   LoopShape shape;
+  bool known_bounds = true;    // its first index and count are constants the compiler knows
   std::int64_t iteration = 0;  // iterations finished
   int max_footprint = 0;       // the largest iteration's code in memory
   int last_static = 0;         // the last iteration's, to where the code after the loop is
@@ -95,6 +98,9 @@ struct OpenLoop {
 struct Sizes {
   int code_bytes = 256;
   int frame_words = 8;
+  // Each loop's code (its last iteration's, from its first instruction to where the code after
+  // it is), by the event that begins it: the distance a count test jumps over a loop not run.
+  std::map<std::size_t, int> loop_bytes;
 };
 
 class Generator : public EmitSink {
@@ -167,8 +173,20 @@ class Generator : public EmitSink {
     const Access& a = r_.accesses()[std::size_t(access)];
     const ArrayDecl& array = r_.arrays()[std::size_t(a.array)];
     const Subscript& s = subscripts_[std::size_t(access)];
-    const std::string element = this->element(access);
     const int words = element_words(array, r_.real64());
+    if (subscript_and_base(access)) {
+      emit({words == 2 ? Op::wsubdb : Op::wsub, 0, 0, false, {}, element(access)});
+      return;
+    }
+    base(a.array, element(access));
+    if (s.offset != 0) emit({Op::ldnlp, s.offset * words, 0, false, {}, element(access)});
+  }
+
+  bool subscript_and_base(int access) override {
+    const Access& a = r_.accesses()[std::size_t(access)];
+    const ArrayDecl& array = r_.arrays()[std::size_t(a.array)];
+    const Subscript& s = subscripts_[std::size_t(access)];
+    const std::string element = this->element(access);
     if (a.subscript >= 0 || s.by_loop) {
       if (a.subscript >= 0) {
         integers_.evaluate(a.subscript);
@@ -177,16 +195,14 @@ class Generator : public EmitSink {
             {Op::ldl, frame_.loop_index(s.depth), 0, false, workspace(), loop_index_name(s.depth)});
         if (s.offset != 0) emit({Op::adc, s.offset, 0, false, {}, element});
       }
-      if (target_.checked) {
+      if (target_.checked && !provably_in_range(a, s, array)) {
         emit({Op::ldc, array.length, 0, false, {}, "bound of " + array.name});
         emit({Op::csub0, 0, 0, false, {}, "range check"});
       }
       base(a.array, element);
-      emit({words == 2 ? Op::wsubdb : Op::wsub, 0, 0, false, {}, element});
-      return;
+      return true;
     }
-    base(a.array, element);
-    if (s.offset != 0) emit({Op::ldnlp, s.offset * words, 0, false, {}, element});
+    return false;
   }
 
   // The subscript, then the bound beside it (ldc; csub0) or the base (ldl; wsub): two registers
@@ -207,10 +223,27 @@ class Generator : public EmitSink {
 
   const Target& target() const override { return target_; }
 
-  Sizes sizes() const { return {bodies_.front().footprint(), frame_.words()}; }
+  Sizes sizes() const { return {bodies_.front().footprint(), frame_.words(), loop_bytes_}; }
 
  private:
   static MemoryRef workspace() { return {Region::workspace, -1}; }
+
+  // The INMOS compiler leaves out the range check of a subscript it proves in range: the bare
+  // index of a SEQ whose first index and count it knows, into an array that holds every index
+  // the SEQ takes (D7205A oc; a subscript computed from the index, i + 1 or 6 - i, is checked;
+  // docs/compute-model.md, "Against the INMOS compiler").
+  bool provably_in_range(const Access& a, const Subscript& s, const ArrayDecl& array) const {
+    int depth = -1;
+    if (a.subscript >= 0) {
+      const Node& n = r_.nodes()[std::size_t(a.subscript)];
+      if (n.kind == NodeKind::loop_index) depth = n.depth;
+    } else if (s.by_loop && s.offset == 0) {
+      depth = s.depth;
+    }
+    if (depth < 0 || depth >= int(loops_.size())) return false;
+    const OpenLoop& l = loops_[std::size_t(depth)];
+    return l.known_bounds && l.shape.first >= 0 && l.shape.first + l.shape.count <= array.length;
+  }
 
   static std::string subscript_text(const Subscript& s) {
     if (!s.by_loop) return std::to_string(s.offset);
@@ -363,17 +396,33 @@ class Generator : public EmitSink {
   }
 
   // SEQ i = first FOR count: the control block's index and count.
+  // A first index or count the PROC computes is evaluated into its word; a computed count is then
+  // tested (oc: ldl count; mint; csub0 stops a negative one; cj jumps over the loop when it is 0).
   void loop_begin(std::size_t event_index) {
     OpenLoop l;
     l.depth = int(loops_.size());
+    l.begin_event = event_index;
     l.shape = shapes_.at(event_index);
+    const LoopBounds& bounds = r_.loop_bounds()[std::size_t(r_.events()[event_index].index)];
+    l.known_bounds = !bounds.variable();
     const int control = frame_.loop_index(l.depth);
     const std::string name = "SEQ " + loop_index_name(l.depth);
-    emit({Op::ldc, l.shape.first, 0, false, {}, name + ": first index"});
-    emit({Op::stl, control, 0, false, workspace(), name});
-    emit({Op::ldc, l.shape.count, 0, false, {}, name + ": count"});
-    emit({Op::stl, control + 1, 0, false, workspace(), name});
-    bodies_.back().flush(label());
+    control_word(bounds.first, l.shape.first, control, name + ": first index");
+    control_word(bounds.count, l.shape.count, control + 1, name + ": count");
+    if (bounds.count >= 0) {
+      emit({Op::ldl, control + 1, 0, false, workspace(), name + ": count"});
+      if (target_.checked) {
+        emit({Op::mint, 0, 0, false, {}, name + ": count not negative"});
+        emit({Op::csub0, 0, 0, false, {}, name + ": count not negative"});
+      }
+      // Not run, the loop has no recorded code to jump over.
+      const bool skip = l.shape.count == 0;
+      const auto known = previous_.loop_bytes.find(event_index);
+      const int over = skip || known == previous_.loop_bytes.end() ? 0 : known->second;
+      emit({Op::cj, over, skip ? 1 : 0, false, {}, name + ": none"});
+    }
+    flow_.release_after(int(event_index), frame_);
+    bodies_.back().flush(label(), l.shape.count);
     loops_.push_back(l);
     bodies_.push_back(Body{});
     started_iteration_.push_back(false);
@@ -432,11 +481,20 @@ class Generator : public EmitSink {
     l.group_size = 0;
   }
 
+  void control_word(int node, std::int64_t constant, int word, const std::string& note) {
+    if (node >= 0)
+      integers_.evaluate(node);
+    else
+      emit({Op::ldc, constant, 0, false, {}, note});
+    emit({Op::stl, word, 0, false, workspace(), note});
+  }
+
   void loop_end() {
     iteration(true);
     OpenLoop& l = loops_.back();
     flush_group(l);
     const int loop_static = l.last_static, loop_footprint = l.max_footprint;
+    loop_bytes_[l.begin_event] = loop_static;
     loops_.pop_back();
     bodies_.pop_back();
     started_iteration_.pop_back();
@@ -460,6 +518,7 @@ class Generator : public EmitSink {
   std::vector<OpenLoop> loops_;
   std::vector<bool> started_iteration_;
   std::vector<const CodeUnit*> routines_;
+  std::map<std::size_t, int> loop_bytes_;
 };
 
 }  // namespace

@@ -239,9 +239,11 @@ void Recording::integer(IntegerStatement statement, std::int64_t count) {
 }
 
 // A loop's iterations are blocks of their own; the loop itself sits in the enclosing block.
-void Recording::loop_begin() {
+void Recording::loop_begin(LoopBounds bounds) {
   Event e;
   e.kind = EventKind::loop_begin;
+  e.index = std::int64_t(loop_bounds_.size());
+  loop_bounds_.push_back(bounds);
   add_event(e);
   open_blocks_.push_back(-1);  // no iteration open yet
   loop_indices_.push_back(0);

@@ -117,9 +117,17 @@ enum class EventKind : std::uint8_t {
   store,       // `node` stored into access `access`
   test,        // IF on comparison `node`; `taken` tells which way it went
   integer,     // `count` integer statements of kind `integer`
-  loop_begin,  // a replicated SEQ begins
+  loop_begin,  // a replicated SEQ begins; `index` is its place in Recording::loop_bounds()
   iteration,   // an iteration begins, its index being `index`
   loop_end,
+};
+
+// A replicated SEQ's first index and count as the kernel gave them: INT nodes for values the PROC
+// computes or holds in variables (SEQ j = k FOR n - k), -1 for a constant the compiler knows.
+struct LoopBounds {
+  int first = -1;
+  int count = -1;
+  bool variable() const { return first >= 0 || count >= 0; }
 };
 
 struct Event {
@@ -185,7 +193,7 @@ class Recording {
 
   // ---- Called by occam structure markers ----
   void integer(IntegerStatement statement, std::int64_t count);
-  void loop_begin();
+  void loop_begin(LoopBounds bounds = {});
   void iteration(std::int64_t index);
   void loop_end();
   // The open SEQs, and the index of the one at `depth` as an INT node (its value this iteration).
@@ -196,6 +204,7 @@ class Recording {
   const std::vector<Event>& events() const { return events_; }
   const std::vector<Access>& accesses() const { return accesses_; }
   const std::vector<ArrayDecl>& arrays() const { return arrays_; }
+  const std::vector<LoopBounds>& loop_bounds() const { return loop_bounds_; }
   int blocks() const { return next_block_; }
 
  private:
@@ -214,6 +223,7 @@ class Recording {
   std::vector<Node> nodes_;
   std::vector<Event> events_;
   std::vector<Access> accesses_;
+  std::vector<LoopBounds> loop_bounds_;  // each SEQ's, in the order they began
   std::vector<ArrayDecl> arrays_;
   std::vector<int> open_blocks_{0};         // the block being recorded, innermost last
   std::vector<std::int64_t> loop_indices_;  // each open SEQ's index this iteration, innermost last

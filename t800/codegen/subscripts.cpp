@@ -86,11 +86,18 @@ class Classifier {
     loop.started = true;
   }
 
-  // Whatever no comparison showed constant is subscripted by the loop's index.
+  // Whatever no comparison showed constant is subscripted by the loop's index -- except an element
+  // of a one-element array (a declared variable), whose subscript can only be constant: in a SEQ of
+  // one iteration no second iteration shows it so.
   void settle(const std::vector<Use>& uses) {
     const int depth = int(loops_.size()) - 1;
-    for (const Use& u : uses)
-      set(u.access, {true, depth, r_.accesses()[std::size_t(u.access)].index - u.loop_index});
+    for (const Use& u : uses) {
+      const Access& a = r_.accesses()[std::size_t(u.access)];
+      if (r_.arrays()[std::size_t(a.array)].length == 1)
+        set(u.access, {false, 0, a.index});
+      else
+        set(u.access, {true, depth, a.index - u.loop_index});
+    }
   }
 
   void set(int access, Subscript s) {

@@ -51,16 +51,16 @@ class OrderParser {
     throw std::runtime_error(
         fmt::format("execution order: {} at run {} of {}", what, pos_, runs_.size()));
   }
-  // The run ends with a loop's setup at `depth`: ldc first; stl 2d; ldc count; stl 2d+1.
+  // The run ends with a loop's set-up (its control block at 2 * depth, stored last, or the
+  // count's test after it), and the generator says how many iterations follow.
   static bool setup(const CodeRun& r, int depth, std::int64_t* count) {
-    const auto& c = r.code;
-    const std::size_t n = c.size();
-    if (n < 4) return false;
-    const bool shape = c[n - 4].op == Op::ldc && c[n - 3].op == Op::stl &&
-                       c[n - 3].operand == 2 * depth && c[n - 2].op == Op::ldc &&
-                       c[n - 1].op == Op::stl && c[n - 1].operand == 2 * depth + 1;
-    if (shape) *count = c[n - 2].operand;
-    return shape;
+    if (r.seq_iterations < 0) return false;
+    for (const Instruction& in : r.code)
+      if (in.op == Op::stl && in.operand == 2 * depth + 1) {
+        *count = r.seq_iterations;
+        return true;
+      }
+    throw std::runtime_error("execution order: a SEQ's set-up without its control block");
   }
   // The run ends an iteration of the loop at `depth`: ldlp 2d; ldc back; lend.
   static bool closes(const CodeRun& r, int depth) {

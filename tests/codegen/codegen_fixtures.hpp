@@ -32,6 +32,26 @@ CodeUnit compile(Body body, Target target = Target{true, false}) {
   return t800::codegen::generate(r, target);
 }
 
+using Int = dynamics::CountedInt;
+
+// Eight INT workspace variables a..h and two INT arrays x and y of 8 elements (parameters), then
+// `body`, recorded and compiled with occam's default run-time checks unless `target` says
+// otherwise.
+template <class Body>
+CodeUnit compile_int(Body body, Target target = Target{true, true}) {
+  t800::codegen::Recording r("K", false);
+  {
+    const t800::codegen::RecordingScope scope(r);
+    Int a(1), b(2), c(3), d(4), e(5), f(6), g(7), h(8);
+    for (Int* v : {&a, &b, &c, &d, &e, &f, &g, &h}) occam::declare_variable(*v, "v");
+    std::vector<Int> x(8, Int(0)), y(8, Int(1));
+    occam::declare(x, "x");
+    occam::declare(y, "y");
+    body(a, b, c, d, e, f, g, h, x, y);
+  }
+  return t800::codegen::generate(r, target);
+}
+
 // The unit's code as executed, between entering the PROC (its ajw) and leaving it, as "op
 // operand" texts for direct functions and mnemonics for the rest: the statements' code alone.
 inline std::vector<std::string> body_code(const CodeUnit& unit) {
@@ -67,6 +87,8 @@ inline int deepest_fp_stack(const CodeUnit& unit) {
       switch (in.op) {
         case Op::fpldnlsn:
         case Op::fpldnldb:
+        case Op::fpldnlsni:
+        case Op::fpldnldbi:
         case Op::fpldzerosn:
         case Op::fpldzerodb:
         case Op::fpdup:

@@ -14,25 +14,11 @@
 namespace {
 
 using codegen_test::body_code;
+using codegen_test::compile_int;
+using codegen_test::Int;  // t800sim::Int
 using t800::codegen::CodeUnit;
 using t800::codegen::Target;
-using Int = dynamics::CountedInt;  // t800sim::Int
 using Seq = std::vector<std::string>;
-
-template <class Body>
-CodeUnit compile_int(Body body, Target target = Target{true, true}) {
-  t800::codegen::Recording r("K", false);
-  {
-    const t800::codegen::RecordingScope scope(r);
-    Int a(1), b(2), c(3), d(4), e(5), f(6), g(7), h(8);
-    for (Int* v : {&a, &b, &c, &d, &e, &f, &g, &h}) occam::declare_variable(*v, "v");
-    std::vector<Int> x(8, Int(0)), y(8, Int(1));
-    occam::declare(x, "x");
-    occam::declare(y, "y");
-    body(a, b, c, d, e, f, g, h, x, y);
-  }
-  return t800::codegen::generate(r, target);
-}
 
 TEST(GeneratedIntegerCode, ASumIsLoadedAddedAndStoredThroughThePointer) {
   const CodeUnit u = compile_int([](Int& a, Int& b, auto&, auto&, auto&, auto&, auto&, auto&,
@@ -246,6 +232,23 @@ TEST(GeneratedIntegerCode, TheLoopsIndexAsAnIntIsTheSameCodeInEveryIteration) {
   EXPECT_EQ(Seq(code.begin() + 4, code.begin() + 15), body);
   EXPECT_EQ(Seq(code.begin() + 18, code.begin() + 29), body);
   EXPECT_EQ(code.back(), "lend");
+}
+
+// A declared variable is a workspace word whatever the loop: in a SEQ of one iteration, where no
+// second iteration shows its subscript constant, it is still ldl/stl, never subscripted by the
+// loop's index (issue 25's `ur :=` compiled as `ldl 0; ldc 1; csub0; ldlp 12; wsub`).
+TEST(GeneratedIntegerCode, AVariableInASeqOfOneIterationIsAWorkspaceWord) {
+  const CodeUnit u =
+      compile_int([](Int& a, auto&, Int& c, auto&, auto&, auto&, auto&, auto&, auto&, auto& y) {
+        for (std::size_t i : occam::seq<Int>(1)) c = a + y[i];
+      });
+  // The control block in words 0 and 1, a in word 4, c in word 6, y's pointer in word 13; the
+  // commutative add loads a (one instruction) last; y[i], the bare index of a known SEQ, is not
+  // range-checked.
+  const Seq code = body_code(u);
+  ASSERT_GE(code.size(), 11u);
+  EXPECT_EQ(Seq(code.begin() + 4, code.begin() + 11),
+            (Seq{"ldl 0", "ldl 13", "wsub", "ldnl 0", "ldl 4", "add", "stl 6"}));
 }
 
 }  // namespace

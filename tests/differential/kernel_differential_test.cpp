@@ -142,7 +142,33 @@ Replay replay_as(const Recording& r, const Values& inputs) {
     out.error = "a computed subscript replays to another element";
     return nullptr;
   };
+  // A SEQ whose bounds the PROC computes must run as its replayed bounds say: its first index and
+  // its count of iterations.
+  struct OpenSeq {
+    std::optional<double> first, count;
+    std::int64_t iterations = 0;
+  };
+  std::vector<OpenSeq> seqs;
   for (const auto& e : r.events()) {
+    if (e.kind == EventKind::loop_begin) {
+      const t800::codegen::LoopBounds& b = r.loop_bounds()[std::size_t(e.index)];
+      OpenSeq s;
+      if (b.first >= 0) s.first = value[std::size_t(b.first)];
+      if (b.count >= 0) s.count = value[std::size_t(b.count)];
+      seqs.push_back(s);
+    } else if (e.kind == EventKind::iteration) {
+      OpenSeq& s = seqs.back();
+      if (s.iterations++ == 0 && s.first && *s.first != double(e.index)) {
+        out.error = "a SEQ starts at another index than its replayed first index";
+        return out;
+      }
+    } else if (e.kind == EventKind::loop_end) {
+      if (seqs.back().count && *seqs.back().count != double(seqs.back().iterations)) {
+        out.error = "a SEQ runs another number of times than its replayed count";
+        return out;
+      }
+      seqs.pop_back();
+    }
     if (e.kind == EventKind::value) {
       const auto& n = r.nodes()[std::size_t(e.node)];
       const double da = n.a >= 0 ? value[std::size_t(n.a)] : 0.0;
@@ -449,6 +475,7 @@ class Pieces {
     (add(before, inputs.value), ...);
     auto [result, work] = code_.run(label, kernel, inputs...);
     if (seen_.insert(work.code.get()).second) {
+      add_parameters(before, *work.code);
       Kernel k{"elimination", std::string(label) + " (" + variant_ + ")", work.code, before, {},
                nullptr};
       out_.push_back(std::move(k));
@@ -463,6 +490,23 @@ class Pieces {
   static void add(Values& v, Row& row) { v.push_back(values_of(row)); }
   static void add(Values& v, C& x) { v.push_back({double(x.value())}); }
   static void add(Values&, std::vector<int>&) {}
+  // An INT variable the piece declares and reads before it assigns it (a row's length,
+  // occam::CountVariable) is a parameter of the PROC: its value, as the piece was called with it,
+  // is an input too (the replay checks the loops it bounds against it).
+  static void add_parameters(Values& v, const Recording& r) {
+    for (std::size_t a = v.size(); a < r.arrays().size(); ++a) {
+      v.emplace_back();
+      const auto& array = r.arrays()[a];
+      if (array.element != t800::codegen::ElementType::int32 ||
+          array.storage != t800::codegen::ArrayStorage::workspace)
+        continue;
+      for (const auto& node : r.nodes())
+        if (node.kind == NodeKind::load && r.accesses()[std::size_t(node.access)].array == int(a)) {
+          v.back().push_back(node.value);
+          break;
+        }
+    }
+  }
 
   std::vector<Kernel>& out_;
   std::string variant_;
@@ -761,6 +805,22 @@ void int_kernels(std::vector<Kernel>& out) {
       t800sim::at(re, base) = t800sim::at(re, base) + t;
     }
     k.outputs[0] = values_of(re);
+  });
+  add("VARIABLE.COUNT" + precision, [&](Kernel& k) {
+    // SEQ j = f FOR n - f: y[j] := y[j] + (a * x[j]); SEQ j = 0 FOR z: y[j] := a (z = 0)
+    std::vector<S> x{S(T(0.5)), S(T(-1.25)), S(T(3.0)), S(T(0.125)), S(T(7.5))}, y = x;
+    S a = T(1.5);
+    Int f = 1, n = 5, z = 0;
+    t800sim::declare(x, "x");
+    t800sim::declare(y, "y");
+    t800sim::declare_variable(a, "a");
+    t800sim::declare_variable(f, "f");
+    t800sim::declare_variable(n, "n");
+    t800sim::declare_variable(z, "z");
+    k.inputs = {values_of(x), values_of(y), {double(a.value())}, {1}, {5}, {0}};
+    for (std::size_t j : t800sim::seq<S>(f, n - f)) y[j] = y[j] + a * x[j];
+    for (std::size_t j : t800sim::seq<S>(z)) y[j] = a;
+    k.outputs[1] = values_of(y);
   });
   if (!real64) {
     add("PERMUTE", [&](Kernel& k) {

@@ -204,7 +204,9 @@ Row<S> normalise(const Row<S>& pivot) {
   const S p = pivot[0];
   Row<S> out(pivot.size() - 1);
   occam::declare(out, "out");
-  for (std::size_t j : occam::seq<S>(1, out.size())) out[j - 1] = pivot[j] / p;
+  // One PROC normalises the pivot row of every step: the row's length is a variable.
+  const occam::CountVariable<S> length(out.size(), "n");
+  for (std::size_t j : occam::seq<S>(1, length)) out[j - 1] = pivot[j] / p;
   const long n = static_cast<long>(out.size());
   note_indexed<S>(1 + 2 * n);
   dynamics::note_loads<S>(1 + 2 * n);  // p once, then row[j] and p (the FPU stack is 3 deep)
@@ -246,7 +248,9 @@ Row<S> eliminate(const Row<S>& row, const Row<S>& pivot) {
   const S multiplier = row[0];
   Row<S> out(pivot.size());
   occam::declare(out, "out");
-  for (std::size_t j : occam::seq<S>(pivot.size())) out[j] = row[j + 1] - multiplier * pivot[j];
+  // One PROC eliminates the rows of every step: the row's length is a variable.
+  const occam::CountVariable<S> length(pivot.size(), "n");
+  for (std::size_t j : occam::seq<S>(length)) out[j] = row[j + 1] - multiplier * pivot[j];
   const long n = static_cast<long>(out.size());
   note_indexed<S>(1 + 3 * n);
   dynamics::note_loads<S>(1 + 3 * n);  // the multiplier once, then row[j], multiplier, pivot[j]

@@ -10,6 +10,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -46,19 +48,26 @@ class LoopTally {
 // recording holds as the loop's index, so that what is computed from it (at(x, 2 * i), a
 // conversion to REAL) is the same code in every iteration:
 //   for (std::size_t i : seq<S>(n)) ...       for (Int i : seq<S>(n)) at(re, i * s) = ...
+// A first index or count given as an INT of the kernel's (a variable, an expression: SEQ j = k FOR
+// n - k) is one the PROC computes when it runs, not one the compiler knows: the code sets the
+// control block from it and tests the count, and subscripts by the index are range-checked
+// (docs/kernels.md, "Loops").
 template <class S>
 class Seq {
   static constexpr bool kInstrumented = dynamics::is_counted_v<S>;
 
  public:
-  Seq(std::size_t first, std::size_t count) : first_(first), count_(count) {
+  Seq(std::size_t first, std::size_t count) : first_(first), count_(count) { begin({}); }
+  Seq(const dynamics::CountedInt& first, const dynamics::CountedInt& count)
+      : first_(checked_bound(first, "first index")), count_(checked_bound(count, "count")) {
+    t800::codegen::LoopBounds bounds;
     if constexpr (kInstrumented) {
-      if (LoopTally* t = LoopTally::current()) t->loop();
       if (auto* r = t800::codegen::Recording::current()) {
-        r->loop_begin();
-        depth_ = r->loop_depth() - 1;
+        bounds.first = unless_constant(*r, first);
+        bounds.count = unless_constant(*r, count);
       }
     }
+    begin(bounds);
   }
   ~Seq() {
     if constexpr (kInstrumented) {
@@ -112,6 +121,28 @@ class Seq {
   iterator end() const { return iterator(first_ + count_, depth_); }
 
  private:
+  void begin(const t800::codegen::LoopBounds& bounds) {
+    if constexpr (kInstrumented) {
+      if (LoopTally* t = LoopTally::current()) t->loop();
+      if (auto* r = t800::codegen::Recording::current()) {
+        r->loop_begin(bounds);
+        depth_ = r->loop_depth() - 1;
+      }
+    }
+  }
+  // occam stops a SEQ whose count is negative (the compiler's count check); a negative first
+  // index has no std::size_t loop variable to be.
+  static std::size_t checked_bound(const dynamics::CountedInt& v, const char* what) {
+    if (v.value() < 0)
+      throw std::out_of_range(std::string("SEQ with the negative ") + what + " " +
+                              std::to_string(v.value()));
+    return std::size_t(v.value());
+  }
+  static int unless_constant(t800::codegen::Recording& r, const dynamics::CountedInt& v) {
+    const int node = dynamics::CountedInt::node_of(r, v);
+    return r.nodes()[std::size_t(node)].kind == t800::codegen::NodeKind::constant ? -1 : node;
+  }
+
   std::size_t first_, count_;
   int depth_ = -1;  // in the recording, when one is active
 };
@@ -122,6 +153,14 @@ Seq<S> seq(std::size_t count) {
 }
 template <class S>
 Seq<S> seq(std::size_t first, std::size_t count) {
+  return Seq<S>(first, count);
+}
+template <class S>
+Seq<S> seq(const dynamics::CountedInt& count) {
+  return Seq<S>(dynamics::CountedInt(0), count);
+}
+template <class S>
+Seq<S> seq(const dynamics::CountedInt& first, const dynamics::CountedInt& count) {
   return Seq<S>(first, count);
 }
 
@@ -172,6 +211,37 @@ void declare_each(const std::vector<S*>& elements, const char* name) {
 template <class S>
 void declare_variable(S& variable, const char* name) {
   declare(&variable, 1, name, true);
+}
+
+// A count the PROC holds in an INT variable rather than one the compiler knows: a row's length
+// where one PROC serves rows of every length. seq<S>(n) of it is SEQ j = 0 FOR n with n a
+// variable; for a scalar that records nothing, the number itself.
+//   const occam::CountVariable<S> n(row.size(), "n");
+//   for (std::size_t j : occam::seq<S>(n)) ...
+template <class S>
+class CountVariable {
+ public:
+  CountVariable(std::size_t n, const char* name) : n_(n), variable_(std::int32_t(n)) {
+    if constexpr (dynamics::is_counted_v<S>) declare_variable(variable_, name);
+  }
+  CountVariable(const CountVariable&) = delete;  // declared where it lives
+  std::size_t value() const { return n_; }
+  const dynamics::CountedInt& variable() const { return variable_; }
+
+ private:
+  std::size_t n_;
+  dynamics::CountedInt variable_;
+};
+template <class S>
+Seq<S> seq(std::size_t first, const CountVariable<S>& count) {
+  if constexpr (dynamics::is_counted_v<S>)
+    return Seq<S>(dynamics::CountedInt(std::int32_t(first)), count.variable());
+  else
+    return Seq<S>(first, count.value());
+}
+template <class S>
+Seq<S> seq(const CountVariable<S>& count) {
+  return seq<S>(0, count);
 }
 
 // Integer statements occam would compile where the kernel says (tests on integers, assignments,
