@@ -33,6 +33,21 @@ using t800sim::Real32;
 using t800sim::Real64;
 using t800sim::seq;
 
+// How occam passes a scalar parameter (D7205A, bench/occam/README.md): a VAL one that fits in a
+// word (INT, REAL32) by value, in the callee's workspace; a VAL REAL64, and any result parameter,
+// through a pointer -- here a one-element array, declared as the parameters are.
+template <class S>
+void val_parameter(S& v, const char* name) {
+  if constexpr (sizeof(typename S::value_type) > 4)
+    declare(&v, 1, name);
+  else
+    declare_variable(v, name);
+}
+template <class S>
+void result_parameter(S& v, const char* name) {
+  declare(&v, 1, name);
+}
+
 template <class S = Real64>
 std::vector<S> ramp(std::size_t n, double start, double step) {
   std::vector<S> v(n);
@@ -48,7 +63,7 @@ t800sim::Kernel axpy(const char* name) {
     S a = typename S::value_type(2);
     declare(x, "x");
     declare(y, "y");
-    declare_variable(a, "a");
+    val_parameter(a, "a");
     for (std::size_t i : seq<S>(100)) y[i] = y[i] + a * x[i];
   });
 }
@@ -60,7 +75,7 @@ t800sim::Kernel dot() {
     Real64 s = 1.0;
     declare(x, "x");
     declare(y, "y");
-    declare_variable(s, "s");
+    result_parameter(s, "s");
     s = Real64(0.0);
     for (std::size_t i : seq<Real64>(100)) s = s + x[i] * y[i];
   });
@@ -91,10 +106,10 @@ t800sim::Kernel butterfly(int h_value, int nb_value) {
         Int h = h_value, nb = nb_value;
         declare(re, "re");
         declare(im, "im");
-        declare_variable(wr, "wr");
-        declare_variable(wi, "wi");
-        declare_variable(h, "h");
-        declare_variable(nb, "nb");
+        val_parameter(wr, "wr");
+        val_parameter(wi, "wi");
+        val_parameter(h, "h");
+        val_parameter(nb, "nb");
         for (Int b : seq<Real64>(std::size_t(nb_value))) {
           for (Int k : seq<Real64>(std::size_t(h_value))) {
             const auto p = [&] { return k + Int(2) * h * b; };
@@ -139,8 +154,8 @@ t800sim::Kernel horner() {
     std::vector<Int> c{3, -1, 4, 1, -5, 9, 2, -6};
     Int x = 2, p = 0;
     declare(c, "c");
-    declare_variable(x, "x");
-    declare_variable(p, "p");
+    val_parameter(x, "x");
+    result_parameter(p, "p");
     p = c[7];
     for (Int i : seq<Real64>(7)) p = p * x + at(c, Int(6) - i);
   });
@@ -153,7 +168,7 @@ t800sim::Kernel integer_sum() {
     for (int i = 0; i < 100; ++i) x[std::size_t(i)] = 7 * i - 300;
     Int s = 5;
     declare(x, "x");
-    declare_variable(s, "s");
+    result_parameter(s, "s");
     s = Int(0);
     for (std::size_t i : seq<Real64>(100)) s = s + x[i];
   });
@@ -165,9 +180,9 @@ t800sim::Kernel deep_expressions() {
   return t800sim::record_kernel<Real64>("K10 deep expressions", [] {
     Real64 a = 1.5, b = 2.25, c = -0.5, d = 3.0, e = 0.75, f = -1.25, g = 2.5, h = 0.125;
     Real64 r = 0, r2 = 0;
-    for (Real64* v : {&a, &b, &c, &d, &e, &f, &g, &h}) declare_variable(*v, "v");
-    declare_variable(r, "r");
-    declare_variable(r2, "r2");
+    for (Real64* v : {&a, &b, &c, &d, &e, &f, &g, &h}) val_parameter(*v, "v");
+    result_parameter(r, "r");
+    result_parameter(r2, "r2");
     r = ((a * b) + (c * d)) * ((e * f) - (g * h));
     r2 =
         (((a * b) + (c * d)) * ((e * f) - (g * h))) /
@@ -183,8 +198,8 @@ t800sim::Kernel row_update(int k_value) {
     Int k = k_value;
     declare(pivot, "pivot");
     declare(row, "row");
-    declare_variable(f, "f");
-    declare_variable(k, "k");
+    val_parameter(f, "f");
+    val_parameter(k, "k");
     for (std::size_t j : seq<Real64>(k, Int(6) - k)) row[j] = row[j] - f * pivot[j];
   });
 }
@@ -195,8 +210,8 @@ t800sim::Kernel clamp(double start) {
     std::vector<Real64> x = ramp(100, start, 0.01);
     Real64 lo = -1.0, hi = 2.0;
     declare(x, "x");
-    declare_variable(lo, "lo");
-    declare_variable(hi, "hi");
+    val_parameter(lo, "lo");
+    val_parameter(hi, "hi");
     for (std::size_t i : seq<Real64>(100)) {
       if (x[i] < lo)
         x[i] = lo;
