@@ -20,6 +20,7 @@ void add_vcd_command(CLI::App& app);      // trace CSV -> VCD, through SystemC's
 void add_listing_command(CLI::App& app);  // generated T800 code of a scene's kernels
 void add_asm_command(CLI::App& app);      // assembler text to a bootable file
 void add_boot_command(CLI::App& app);     // a bootable file run on the instruction-set simulator
+void add_occam_command(CLI::App& app);    // occam built by an INMOS toolset running on the ISS
 
 // Exit codes shared by the commands.
 constexpr int kExitOk = 0;

@@ -27,6 +27,7 @@ int sc_main(int argc, char* argv[]) {
   tools::add_listing_command(app);
   tools::add_asm_command(app);
   tools::add_boot_command(app);
+  tools::add_occam_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

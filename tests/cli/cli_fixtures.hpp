@@ -16,6 +16,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 #include "tests/test_files.hpp"
 #include "tests/test_paths.hpp"
 
@@ -38,6 +40,14 @@ struct Output {
   int exit_code = -1;
   std::string out;  // stdout and stderr, in that order when redirected with 2>&1 by the caller
 };
+
+// The --json report a run printed (one line; messages may follow), or a discarded value if none.
+inline nlohmann::json report_of(const Output& o) {
+  const auto brace = o.out.find('{');
+  if (brace == std::string::npos) return nlohmann::json();
+  return nlohmann::json::parse(o.out.substr(brace, o.out.find('\n', brace) - brace), nullptr,
+                               false);
+}
 
 inline Output run(const std::string& args) {
   const std::string command = std::string("cd ") + test_paths::source_dir() +

@@ -19,13 +19,15 @@ TEST(PaperCommand, Table4HasTheDocumentedRowsAndTheFittedRowHolds) {
   for (std::size_t i = 0; i < 4; ++i) {
     const json& r = t["rows"][i];
     EXPECT_EQ(r["workers"], workers[i]);
-    for (const char* key : {"paper_ms", "simulated_ms", "error_pct"}) EXPECT_TRUE(r[key].is_number()) << key;
+    for (const char* key : {"paper_ms", "simulated_ms", "error_pct"})
+      EXPECT_TRUE(r[key].is_number()) << key;
     EXPECT_NEAR(r["error_pct"].get<double>(),
-                100 * (r["simulated_ms"].get<double>() - r["paper_ms"].get<double>()) / r["paper_ms"].get<double>(),
+                100 * (r["simulated_ms"].get<double>() - r["paper_ms"].get<double>()) /
+                    r["paper_ms"].get<double>(),
                 1e-9);
   }
-  // The recorded calibration must still reproduce the row it was fitted on: if the cost model changes, rerun
-  // `t800sim calibrate` and record the new factor.
+  // The recorded calibration must still reproduce the row it was fitted on: if the cost model
+  // changes, rerun `t800sim calibrate` and record the new factor.
   EXPECT_EQ(t["rows"][0]["paper_ms"], 25.6);
   EXPECT_NEAR(t["rows"][0]["simulated_ms"].get<double>(), 25.6, 0.01);
 }
@@ -51,8 +53,8 @@ TEST(PaperCommand, BadOverrideIsReported) {
   EXPECT_NE(o.out.find("5, 10 or 20"), std::string::npos) << o.out;
 }
 
-// The reference state (full model) whose printed values tests/dynamics/reference_state_test.cpp checks;
-// tests/dynamics/kdl_agreement_test.cpp checks the same model against Orocos KDL.
+// The reference state (full model) whose printed values tests/dynamics/reference_state_test.cpp
+// checks; tests/dynamics/kdl_agreement_test.cpp checks the same model against Orocos KDL.
 TEST(DynamicsCommand, ReferenceState) {
   const auto o = run("dynamics --q 0.1,0.2,0.5,0.3,0.4,0.5 --qd 0.1,-0.2,0.05,0.3,-0.1,0.2 --json");
   ASSERT_EQ(o.exit_code, 0) << o.out;

@@ -15,11 +15,7 @@ namespace {
 
 using nlohmann::json;
 
-json report_of(const cli_test::Output& o) {
-  const auto brace = o.out.find('{');  // the report is one line; error messages may follow
-  if (brace == std::string::npos) return json();
-  return json::parse(o.out.substr(brace, o.out.find('\n', brace) - brace), nullptr, false);
-}
+using cli_test::report_of;
 
 // 1e20 rad/s squared overflows REAL32 (3.4e38) in the Coriolis terms: c comes out infinite or NaN.
 TEST(RunOutcome, AnOverflowInReal32IsAFailureNotNull) {

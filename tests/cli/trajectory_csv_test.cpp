@@ -20,11 +20,7 @@ using nlohmann::json;
 
 using cli_test::fresh_dir;
 
-json report_of(const cli_test::Output& o) {
-  const auto brace = o.out.find('{');
-  if (brace == std::string::npos) return json();
-  return json::parse(o.out.substr(brace, o.out.find('\n', brace) - brace), nullptr, false);
-}
+using cli_test::report_of;
 
 // The CSV as a header and rows of numbers.
 struct Csv {
