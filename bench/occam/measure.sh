@@ -27,16 +27,6 @@ die() { # status message...
   exit "$status"
 }
 
-# The toolset files this script uses; naming every one that is missing saves a round trip.
-check_toolset() { # dir
-  [ -d "$1" ] || die 2 "TOOLSET '$1' is not a directory"
-  local f missing=()
-  for f in itools/oc.btl itools/ilink.btl itools/icollect.btl libs/hostio.lib; do
-    [ -f "$1/$f" ] || missing+=("$1/$f")
-  done
-  [ ${#missing[@]} -eq 0 ] || die 2 "not a D7205A toolset, missing: ${missing[*]}"
-}
-
 default_t800sim() {
   local built="$HERE/../../build/t800sim"
   if [ -x "$built" ]; then absolute_program "$built"
@@ -57,28 +47,22 @@ is_config() { # name
   "$HARNESS" list | grep -xF -- "$1" >/dev/null  # not -q: an early exit would break the pipe
 }
 
-# Run a toolset program on t800sim. The host server is sandboxed to --host-dir, so everything the
-# tool reads (sources, libs/) lies in the current directory; ISEARCH makes oc and ilink look in libs/.
-tool() { # program args...
-  local prog=$1; shift
-  local log="$prog.log"
-  if ! ISEARCH=libs/ timeout "$TIMEOUT" "$T800SIM" boot "$TOOLSET/itools/$prog.btl" --host-dir . \
-      -- "$@" >"$log" 2>&1; then
-    echo "measure.sh: $NAME: $prog $* failed (its files are left in $PWD):" >&2
-    cat "$log" >&2
+# Build the harness calling the kernel R times with `t800sim occam build` (oc, ilink and icollect
+# running on t800sim; the configuration's oc options apply to the kernel and the harness alike), boot
+# it, and leave its report in rR.json.
+build_and_run() { # R
+  local r=$1 oc=()
+  for o in ${OPTIONS[@]+"${OPTIONS[@]}"}; do oc+=("--oc=$o"); done
+  "$HARNESS" source "$NAME" "$r" >"h$r.occ"
+  if ! timeout "$TIMEOUT" "$T800SIM" occam build "h$r.occ" --with "$KERNEL.occ" \
+      --toolset "$TOOLSET" ${oc[@]+"${oc[@]}"} -o "h$r.btl" --work-dir "work$r" \
+      --max-host-s "$TIMEOUT" >"build$r.log" 2>&1; then
+    echo "measure.sh: $NAME: building the R=$r harness failed (its files are left in $PWD):" >&2
+    cat "build$r.log" >&2
     exit 1
   fi
-}
-
-# Build the harness calling the kernel R times, boot it, and leave its report in rR.json.
-build_and_run() { # R
-  local r=$1
-  "$HARNESS" source "$NAME" "$r" >harness.occ
-  tool oc harness -t8 -o harness.t8h
-  tool ilink harness.t8h "$KERNEL.t8c" hostio.lib -f occam8.lnk -t8 -o harness.c8h
-  tool icollect harness.c8h -t -p harness.map
   # Default board: T800-20, 2 MiB; the harness prints GO and END and exits with sps.success.
-  if ! timeout "$TIMEOUT" "$T800SIM" boot harness.btl --host-dir . --json "r$r.json" \
+  if ! timeout "$TIMEOUT" "$T800SIM" boot "h$r.btl" --host-dir . --json "r$r.json" \
       >"run$r.log" 2>&1; then
     echo "measure.sh: $NAME: the R=$r harness failed (its files are left in $PWD):" >&2
     cat "run$r.log" >&2
@@ -102,14 +86,12 @@ EOF
 measure() { # name
   NAME=$1
   KERNEL=$("$HARNESS" kernel "$NAME")
-  local options dir
-  read -r -a options <<<"$("$HARNESS" options "$NAME")"
+  local dir
+  read -r -a OPTIONS <<<"$("$HARNESS" options "$NAME")"
   dir=$(mktemp -d "${TMPDIR:-/tmp}/occam-measure.$NAME.XXXXXX")
   (
     cd "$dir"
     cp "$HERE/$KERNEL.occ" .
-    mkdir libs && cp -R "$TOOLSET/libs/." libs/
-    tool oc "$KERNEL" -t8 ${options[@]+"${options[@]}"} -o "$KERNEL.t8c"
     build_and_run 1
     build_and_run 2
     local figures instr cycles
@@ -124,7 +106,6 @@ main() {
   [ $# -ge 1 ] || usage
   TOOLSET=$(cd "$1" 2>/dev/null && pwd) || die 2 "TOOLSET '$1' is not a directory"
   shift
-  check_toolset "$TOOLSET"
   # The second argument is T800SIM unless it names a configuration.
   if [ $# -ge 1 ] && ! is_config "$1"; then
     T800SIM=$(absolute_program "$1") ||
