@@ -17,11 +17,7 @@ namespace {
 
 using nlohmann::json;
 
-json report_of(const cli_test::Output& o) {
-  const auto brace = o.out.find('{');
-  if (brace == std::string::npos) return json();
-  return json::parse(o.out.substr(brace, o.out.find('\n', brace) - brace), nullptr, false);
-}
+using cli_test::report_of;
 
 json run_json(const std::string& args, int expected_exit) {
   const auto o = cli_test::run("run " + args + " --json");
