@@ -16,15 +16,18 @@ using t800::codegen::CodeUnit;
 using t800::codegen::Target;
 using t800::isa::Op;
 
-// Six workspace variables a..f and an array x (a parameter), then `body`, recorded and compiled.
-template <class Body>
-CodeUnit compile(Body body, Target target = Target{true, false}) {
+using Int = dynamics::CountedInt;
+
+// Eight workspace variables a..h (values 1..8) and two arrays x and y of 8 elements (parameters),
+// all of scalar S, then `body`, recorded and compiled.
+template <class S, class Body>
+CodeUnit compile_with(Body body, Target target) {
   t800::codegen::Recording r("K", false);
   {
     const t800::codegen::RecordingScope scope(r);
-    C a(1), b(2), c(3), d(4), e(5), f(6), g(7), h(8);
-    for (C* v : {&a, &b, &c, &d, &e, &f, &g, &h}) occam::declare_variable(*v, "v");
-    std::vector<C> x(8, C(0)), y(8, C(1));
+    S a(1), b(2), c(3), d(4), e(5), f(6), g(7), h(8);
+    for (S* v : {&a, &b, &c, &d, &e, &f, &g, &h}) occam::declare_variable(*v, "v");
+    std::vector<S> x(8, S(0)), y(8, S(1));
     occam::declare(x, "x");
     occam::declare(y, "y");
     body(a, b, c, d, e, f, g, h, x, y);
@@ -32,24 +35,17 @@ CodeUnit compile(Body body, Target target = Target{true, false}) {
   return t800::codegen::generate(r, target);
 }
 
-using Int = dynamics::CountedInt;
+// REAL32 variables and arrays, compiled without run-time checks unless `target` says otherwise.
+template <class Body>
+CodeUnit compile(Body body, Target target = Target{true, false}) {
+  return compile_with<C>(body, target);
+}
 
-// Eight INT workspace variables a..h and two INT arrays x and y of 8 elements (parameters), then
-// `body`, recorded and compiled with occam's default run-time checks unless `target` says
+// INT variables and arrays, compiled with occam's default run-time checks unless `target` says
 // otherwise.
 template <class Body>
 CodeUnit compile_int(Body body, Target target = Target{true, true}) {
-  t800::codegen::Recording r("K", false);
-  {
-    const t800::codegen::RecordingScope scope(r);
-    Int a(1), b(2), c(3), d(4), e(5), f(6), g(7), h(8);
-    for (Int* v : {&a, &b, &c, &d, &e, &f, &g, &h}) occam::declare_variable(*v, "v");
-    std::vector<Int> x(8, Int(0)), y(8, Int(1));
-    occam::declare(x, "x");
-    occam::declare(y, "y");
-    body(a, b, c, d, e, f, g, h, x, y);
-  }
-  return t800::codegen::generate(r, target);
+  return compile_with<Int>(body, target);
 }
 
 // The unit's code as executed, between entering the PROC (its ajw) and leaving it, as "op
